@@ -1,0 +1,28 @@
+# The workspace's entry points. Each target sets up what it needs (tools/setup.sh is
+# idempotent: a second run installs nothing and rebuilds only what changed).
+#   make          set up and build
+#   make demo     set up, then run the main demo (headless: prints a screenshot's path)
+#   make test     set up, then run every test tier; ends with "N passed, N failed"
+#   make lint     catkin_lint -W2 on every package
+.PHONY: all setup demo test lint clean
+
+# Whatever python3 pyenv or conda put first, the workspace runs on the system interpreter.
+SHELL := /bin/bash
+RUN := source tools/env.bash &&
+
+all: setup
+
+setup:
+	@bash tools/setup.sh
+
+demo: setup
+	@$(RUN) python3 tools/demo.py
+
+test: setup
+	@$(RUN) python3 tools/run_tests.py
+
+lint: setup
+	@$(RUN) catkin_lint -W2 --strict .
+
+clean:
+	rm -rf .ws test_results

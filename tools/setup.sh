@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# Sets up the workspace on a fresh machine and rebuilds it; safe to run again.
+#
+#   1. checks the platform (Debian bookworm, Ubuntu 22.04 or 24.04);
+#   2. installs the ROS 1 Debian packages and tools that are missing (nothing when none is);
+#   3. makes .venv from the system interpreter and installs tools/requirements.txt
+#      (again only when that file changed);
+#   4. builds the catkin workspace in .ws/ (the repository is linked as .ws/src/<repo>,
+#      the classic ~/catkin_ws/src/<repo> layout) with the system interpreter.
+#
+# Everything prints one line per step so that a second run shows that it did nothing.
+set -euo pipefail
+
+repo=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+# shellcheck source=tools/platform.sh
+source "$repo/tools/platform.sh"
+
+check_platform
+
+# --- 2. Debian packages ---------------------------------------------------------------
+# What each group is for: ROS 1 runtime and build, the robot tools, headless rviz, the venv.
+apt_packages=(
+  catkin catkin-lint python3-catkin-pkg ros-message-generation ros-message-runtime
+  python3-genpy python3-genmsg cmake make g++
+  ros-core rosout rosbash python3-rospy python3-roslaunch python3-rostest python3-rosunit
+  python3-actionlib python3-tf2-ros python3-tf2-geometry-msgs python3-wstool
+  ros-std-msgs ros-std-srvs ros-geometry-msgs ros-sensor-msgs ros-nav-msgs
+  ros-visualization-msgs ros-trajectory-msgs ros-actionlib-msgs
+  ros-robot-state-publisher joint-state-publisher joint-state-publisher-gui rviz
+  liburdfdom-tools
+  xvfb xauth x11-utils imagemagick
+  python3-venv python3-pip
+)
+missing=()
+for pkg in "${apt_packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || missing+=("$pkg")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: Debian packages: all ${#apt_packages[@]} present"
+else
+  echo "setup: Debian packages: installing ${#missing[@]}: ${missing[*]}"
+  sudo_cmd=()
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "setup: need root or sudo to install Debian packages" >&2; exit 1; }
+    sudo_cmd=(sudo)
+  fi
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}" >/dev/null
+  echo "setup: Debian packages: done"
+fi
+
+# --- 3. the virtual environment -------------------------------------------------------
+venv="$repo/.venv"
+requirements="$repo/tools/requirements.txt"
+stamp="$venv/.requirements.sha256"
+want=$(sha256sum "$requirements" | cut -d' ' -f1)
+if [ ! -x "$venv/bin/python3" ] || [ "$(readlink -f "$venv/bin/python3")" != "$(readlink -f /usr/bin/python3)" ]; then
+  rm -rf "$venv"
+  /usr/bin/python3 -m venv --system-site-packages "$venv"
+  echo "setup: venv: created $venv from /usr/bin/python3"
+fi
+if [ "$(cat "$stamp" 2>/dev/null)" = "$want" ]; then
+  echo "setup: venv: requirements up to date"
+else
+  echo "setup: venv: installing tools/requirements.txt"
+  "$venv/bin/python3" -m pip install --quiet --disable-pip-version-check -r "$requirements" 2>&1 \
+    | grep -v "is ignored: it is neither a file nor a directory" || true
+  "$venv/bin/python3" -c "import pybullet, xacro, ompl, pytest" 2>/dev/null \
+    || { echo "setup: venv: the pinned packages do not import" >&2; exit 1; }
+  echo "$want" > "$stamp"
+fi
+
+# --- 4. the catkin build --------------------------------------------------------------
+ws="$repo/.ws"
+mkdir -p "$ws/src"
+link="$ws/src/$(basename "$repo")"
+[ -L "$link" ] || ln -s ../.. "$link"
+# The system interpreter first, whatever pyenv or conda put on PATH.
+export PATH="/usr/bin:/bin:$PATH"
+log="$ws/catkin_make.log"
+if (cd "$ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=OFF \
+      >"$log" 2>&1); then
+  echo "setup: catkin build: ok ($(grep -c "Built target" "$log" || true) targets; log $log)"
+else
+  tail -n 40 "$log" >&2
+  echo "setup: catkin build failed; the whole log is $log" >&2
+  exit 1
+fi
