@@ -81,7 +81,7 @@ export PATH="/usr/bin:/bin:$PATH"
 log="$ws/catkin_make.log"
 if (cd "$ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=OFF \
       >"$log" 2>&1); then
-  echo "setup: catkin build: ok ($(grep -c "Built target" "$log" || true) targets; log $log)"
+  echo "setup: catkin build: ok ($(ls -d "$repo"/*/package.xml | wc -l) packages; log $log)"
 else
   tail -n 40 "$log" >&2
   echo "setup: catkin build failed; the whole log is $log" >&2

@@ -1,0 +1,51 @@
+"""Checks every package, launch file and URDF in the workspace with ROS's own tools."""
+import glob
+import os
+import subprocess
+
+import pytest
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SKIP = (os.sep + ".ws" + os.sep, os.sep + ".venv" + os.sep, os.sep + "test_results" + os.sep)
+
+
+def workspace_files(pattern):
+    found = glob.glob(os.path.join(REPO, "**", pattern), recursive=True)
+    return sorted(os.path.relpath(p, REPO) for p in found if not any(s in p for s in SKIP))
+
+
+PACKAGES = [os.path.dirname(p) for p in workspace_files("package.xml")]
+LAUNCH_FILES = [p for p in workspace_files("*.launch") + workspace_files("*.test")
+                if "/test/" not in p or p.endswith(".test")]
+URDF_FILES = workspace_files("*.urdf")
+
+
+def run(command):
+    return subprocess.run(command, cwd=REPO, capture_output=True, text=True, check=False,
+                          timeout=120)
+
+
+def test_the_workspace_has_packages_and_launch_files():
+    assert "my_rb1_description" in PACKAGES
+    assert "my_rb1_description/launch/display.launch" in LAUNCH_FILES
+
+
+@pytest.mark.parametrize("package", PACKAGES)
+def test_catkin_lint_finds_no_warnings(package):
+    result = run(["catkin_lint", "-W2", "--strict", package])
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+@pytest.mark.parametrize("launch_file", LAUNCH_FILES)
+def test_roslaunch_check_passes(launch_file, tmp_path):
+    # roslaunch-check is a script of the roslaunch package, not a command on PATH
+    result = run(["rosrun", "roslaunch", "roslaunch-check", "-o", str(tmp_path / "check.xml"),
+                  launch_file])
+    assert result.returncode == 0 and "FAILURE" not in result.stdout, \
+        result.stdout + result.stderr
+
+
+@pytest.mark.parametrize("urdf", [p for p in URDF_FILES if "/e2e/data/" not in p])
+def test_check_urdf_passes(urdf):
+    result = run(["check_urdf", urdf])
+    assert result.returncode == 0, result.stdout + result.stderr

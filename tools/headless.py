@@ -1,0 +1,187 @@
+"""Running the workspace's launch files as a user would, with no screen and no shared master.
+
+Used by ``make demo`` and by the end-to-end tests in ``test/``:
+
+- :func:`virtual_display` starts Xvfb on a free display and waits until it answers;
+- :func:`private_master` picks a free port, so a run never meets another run's roscore;
+- :func:`roslaunch` starts a launch file with a log file and stops it (and its children);
+- :func:`stable_screenshot` waits until a window is drawn and its picture stops changing;
+- :func:`dark_pixels` and :func:`differing_pixels` measure screenshots with ImageMagick.
+
+Every wait has a timeout and says what it was waiting for when it runs out.
+"""
+from __future__ import annotations
+
+import contextlib
+import os
+import shutil
+import signal
+import socket
+import subprocess
+import tempfile
+import time
+from typing import Dict, Iterator, List, Optional, Sequence
+
+
+class WaitTimeout(RuntimeError):
+    """A condition did not come true in time; the message says which."""
+
+
+def wait_until(condition, timeout: float, what: str, interval: float = 0.1):
+    """Polls ``condition`` until it returns something true; raises :class:`WaitTimeout`."""
+    deadline = time.monotonic() + timeout
+    while True:
+        result = condition()
+        if result:
+            return result
+        if time.monotonic() > deadline:
+            raise WaitTimeout(f"timed out after {timeout:.0f} s waiting for {what}")
+        time.sleep(interval)
+
+
+def free_port() -> int:
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        return sock.getsockname()[1]
+
+
+@contextlib.contextmanager
+def private_master(ros_home: Optional[str] = None) -> Iterator[Dict[str, str]]:
+    """An environment whose ROS_MASTER_URI points at a free port (roslaunch starts the
+    master there) and whose ROS_HOME (logs) is ``ros_home`` or a temporary folder."""
+    with contextlib.ExitStack() as stack:
+        if ros_home is None:
+            ros_home = stack.enter_context(tempfile.TemporaryDirectory(prefix="ros_home_"))
+        env = dict(os.environ)
+        env["ROS_MASTER_URI"] = f"http://127.0.0.1:{free_port()}"
+        env["ROS_HOME"] = ros_home
+        env["ROS_IP"] = "127.0.0.1"
+        env.pop("ROS_HOSTNAME", None)
+        yield env
+
+
+@contextlib.contextmanager
+def virtual_display(width: int = 1024, height: int = 768,
+                    timeout: float = 20.0) -> Iterator[str]:
+    """Starts Xvfb on a free display number; yields the DISPLAY value."""
+    if shutil.which("Xvfb") is None:
+        raise RuntimeError("Xvfb is not installed; run 'make' to set up the workspace")
+    number = next(n for n in range(90, 200) if not os.path.exists(f"/tmp/.X11-unix/X{n}")
+                  and not os.path.exists(f"/tmp/.X{n}-lock"))
+    display = f":{number}"
+    server = subprocess.Popen(
+        ["Xvfb", display, "-screen", "0", f"{width}x{height}x24", "-nolisten", "tcp"],
+        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        wait_until(lambda: subprocess.run(["xdpyinfo", "-display", display],
+                                          capture_output=True, check=False).returncode == 0
+                   or server.poll() is not None, timeout, f"Xvfb on {display}")
+        if server.poll() is not None:
+            raise RuntimeError(f"Xvfb on {display} exited with code {server.returncode}")
+        yield display
+    finally:
+        server.terminate()
+        try:
+            server.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            server.kill()
+
+
+class Launch:
+    """A running ``roslaunch``; its output goes to ``log_path``."""
+
+    def __init__(self, process: subprocess.Popen, log_path: str):
+        self.process = process
+        self.log_path = log_path
+
+    def output(self) -> str:
+        with open(self.log_path, encoding="utf-8", errors="replace") as stream:
+            return stream.read()
+
+    def running(self) -> bool:
+        return self.process.poll() is None
+
+    def stop(self, timeout: float = 20.0) -> None:
+        if self.process.poll() is not None:
+            return
+        # roslaunch shuts its nodes down on SIGINT, as on Ctrl-C
+        os.killpg(self.process.pid, signal.SIGINT)
+        try:
+            self.process.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(self.process.pid, signal.SIGKILL)
+            self.process.wait()
+
+
+@contextlib.contextmanager
+def roslaunch(arguments: Sequence[str], env: Dict[str, str], log_path: str) -> Iterator[Launch]:
+    """``roslaunch <arguments>`` in its own process group, stopped on exit."""
+    port = env["ROS_MASTER_URI"].rsplit(":", 1)[1]
+    command: List[str] = ["roslaunch", "-p", port, *arguments]
+    with open(log_path, "w", encoding="utf-8") as log:
+        process = subprocess.Popen(command, env=env, stdout=log, stderr=subprocess.STDOUT,
+                                   stdin=subprocess.DEVNULL, start_new_session=True)
+    launch = Launch(process, log_path)
+    try:
+        yield launch
+    finally:
+        launch.stop()
+
+
+def window_mapped(display: str, title: str) -> bool:
+    tree = subprocess.run(["xwininfo", "-display", display, "-root", "-tree"],
+                          capture_output=True, text=True, check=False).stdout
+    return f'"{title}' in tree or title in tree
+
+
+def screenshot(display: str, path: str) -> str:
+    subprocess.run(["import", "-display", display, "-window", "root", path],
+                   check=True, capture_output=True)
+    return path
+
+
+def differing_pixels(first: str, second: str, fuzz: str = "3%") -> int:
+    """How many pixels differ between two images of the same size."""
+    result = subprocess.run(["compare", "-metric", "AE", "-fuzz", fuzz, first, second,
+                             "null:"], capture_output=True, text=True, check=False)
+    if result.returncode not in (0, 1):
+        raise RuntimeError(f"compare failed: {result.stderr.strip()}")
+    return int(float(result.stderr.split()[0]))
+
+
+def dark_pixels(path: str, threshold: str = "15%") -> int:
+    """How many pixels are darker than ``threshold`` of full brightness."""
+    result = subprocess.run(["convert", path, "-colorspace", "Gray", "-threshold", threshold,
+                             "-negate", "-format", "%[fx:round(mean*w*h)]", "info:"],
+                            capture_output=True, text=True, check=True)
+    return int(result.stdout.strip())
+
+
+def stable_screenshot(display: str, path: str, window_title: str, launch: Launch,
+                      timeout: float = 90.0, settle: int = 3) -> str:
+    """Waits for a window titled ``window_title`` (while ``launch`` keeps running), then
+    takes screenshots until ``settle`` in a row are identical; returns ``path``."""
+    def mapped():
+        if not launch.running():
+            raise RuntimeError(f"roslaunch exited early; see {launch.log_path}")
+        return window_mapped(display, window_title)
+
+    started = time.monotonic()
+    wait_until(mapped, timeout, f"a window titled '{window_title}' on {display}", 0.25)
+    previous = path + ".previous.png"
+    same = 0
+    screenshot(display, previous)
+
+    def settled():
+        nonlocal same
+        if not launch.running():
+            raise RuntimeError(f"roslaunch exited early; see {launch.log_path}")
+        screenshot(display, path)
+        same = same + 1 if differing_pixels(previous, path, fuzz="0%") == 0 else 0
+        shutil.copyfile(path, previous)
+        return same >= settle
+
+    remaining = max(10.0, timeout - (time.monotonic() - started))
+    wait_until(settled, remaining, f"the picture on {display} to stop changing", 0.5)
+    os.remove(previous)
+    return path

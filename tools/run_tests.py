@@ -1,0 +1,170 @@
+"""Runs every test tier of the workspace and ends with one line: ``N passed, N failed``.
+
+Tiers, in order (design.md, "Tests"):
+  1. unit       pytest, no master:   <package>/test/unit/
+  2. description pytest, no master:  <package>/test/description/, test/description/
+  3. rostest    a real master each:  <package>/test/rostest/*.test
+  4. e2e        as a user types it:  test/e2e/
+
+Counts come from the JUnit XML every runner writes (under test_results/), so a test
+case is a test case whichever runner ran it. A rostest file that fails without a result
+(a node that crashed, a launch error) counts as one failure. The exit status is non-zero
+when anything failed or errored.
+
+  python3 tools/run_tests.py [--tier NAME ...] [-k EXPRESSION]
+"""
+from __future__ import annotations
+
+import argparse
+import glob
+import os
+import shutil
+import subprocess
+import sys
+import time
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+from typing import List
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+RESULTS = os.path.join(REPO, "test_results")
+TIERS = ("unit", "description", "rostest", "e2e")
+# The longest a single rostest file may take, launch and tear-down included; each
+# <test> has its own, shorter time-limit.
+ROSTEST_TIMEOUT = 600
+
+
+@dataclass
+class Tally:
+    passed: int = 0
+    failed: int = 0
+    skipped: int = 0
+    failures: List[str] = field(default_factory=list)
+
+    def add(self, other: "Tally") -> None:
+        self.passed += other.passed
+        self.failed += other.failed
+        self.skipped += other.skipped
+        self.failures += other.failures
+
+
+def packages() -> List[str]:
+    found = glob.glob(os.path.join(REPO, "*", "package.xml"))
+    return sorted(os.path.dirname(p) for p in found)
+
+
+def count_junit(path: str) -> Tally:
+    tally = Tally()
+    root = ET.parse(path).getroot()
+    for case in root.iter("testcase"):
+        name = f"{case.get('classname', '')}.{case.get('name', '')}"
+        if case.find("failure") is not None or case.find("error") is not None:
+            tally.failed += 1
+            tally.failures.append(name)
+        elif case.find("skipped") is not None:
+            tally.skipped += 1
+        else:
+            tally.passed += 1
+    return tally
+
+
+def run_pytest(tier: str, paths: List[str], keyword: str) -> Tally:
+    paths = [p for p in paths if os.path.isdir(p)]
+    if not paths:
+        return Tally()
+    junit = os.path.join(RESULTS, f"pytest-{tier}.xml")
+    command = [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider",
+               f"--junitxml={junit}", *paths]
+    if keyword:
+        command += ["-k", keyword]
+    code = subprocess.run(command, cwd=REPO, check=False).returncode
+    if code == 5:  # pytest: no tests were collected (e.g. filtered out by -k)
+        return Tally()
+    if not os.path.exists(junit):
+        return Tally(failed=1, failures=[f"{tier}: pytest exited {code} without results"])
+    tally = count_junit(junit)
+    if code != 0 and tally.failed == 0:
+        tally.failed, tally.failures = 1, [f"{tier}: pytest exited {code}"]
+    return tally
+
+
+def run_rostests(keyword: str) -> Tally:
+    tally = Tally()
+    test_files = sorted(glob.glob(os.path.join(REPO, "*", "test", "rostest", "*.test")))
+    if keyword:
+        test_files = [f for f in test_files if keyword in os.path.basename(f)]
+    for test_file in test_files:
+        package = os.path.basename(os.path.dirname(os.path.dirname(os.path.dirname(test_file))))
+        name = os.path.splitext(os.path.basename(test_file))[0]
+        ros_home = os.path.join(RESULTS, "rostest", package, name)
+        shutil.rmtree(ros_home, ignore_errors=True)
+        os.makedirs(ros_home)
+        env = dict(os.environ, ROS_HOME=ros_home)
+        print(f"rostest {package} {name}.test", flush=True)
+        started = time.monotonic()
+        log_path = os.path.join(ros_home, "rostest.log")
+        with open(log_path, "w", encoding="utf-8") as log:
+            try:
+                code = subprocess.run(["rostest", package, os.path.basename(test_file)],
+                                      env=env, stdout=log, stderr=subprocess.STDOUT,
+                                      timeout=ROSTEST_TIMEOUT, check=False).returncode
+            except subprocess.TimeoutExpired:
+                code = -1
+        results = glob.glob(os.path.join(ros_home, "test_results", "**", "rosunit-*.xml"),
+                            recursive=True)
+        file_tally = Tally()
+        for result in results:
+            file_tally.add(count_junit(result))
+        if code != 0 and file_tally.failed == 0:
+            file_tally.failed += 1
+            file_tally.failures.append(f"{package}/{name}.test: rostest exited {code}")
+        verdict = "ok" if code == 0 else f"FAILED (log {os.path.relpath(log_path, REPO)})"
+        print(f"  {file_tally.passed} passed, {file_tally.failed} failed in "
+              f"{time.monotonic() - started:.0f} s: {verdict}", flush=True)
+        tally.add(file_tally)
+    return tally
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--tier", action="append", choices=TIERS,
+                        help="run only this tier (may be repeated)")
+    parser.add_argument("-k", dest="keyword", default="",
+                        help="pytest -k expression; for rostest, a part of the .test name")
+    args = parser.parse_args()
+    tiers = args.tier or list(TIERS)
+    os.makedirs(RESULTS, exist_ok=True)
+    # Logs of everything the tests start stay in test_results/, not in ~/.ros.
+    os.environ.setdefault("ROS_HOME", os.path.join(RESULTS, "ros_home"))
+
+    total = Tally()
+    started = time.monotonic()
+    for tier in tiers:
+        print(f"\n=== {tier} ===", flush=True)
+        tier_started = time.monotonic()
+        if tier == "unit":
+            tally = run_pytest(tier, [os.path.join(p, "test", "unit") for p in packages()],
+                               args.keyword)
+        elif tier == "description":
+            tally = run_pytest(tier, [os.path.join(p, "test", "description") for p in packages()]
+                               + [os.path.join(REPO, "test", "description")], args.keyword)
+        elif tier == "rostest":
+            tally = run_rostests(args.keyword)
+        else:
+            tally = run_pytest(tier, [os.path.join(REPO, "test", "e2e")], args.keyword)
+        print(f"=== {tier}: {tally.passed} passed, {tally.failed} failed, {tally.skipped} "
+              f"skipped in {time.monotonic() - tier_started:.0f} s ===", flush=True)
+        total.add(tally)
+
+    print(f"\nall tiers took {time.monotonic() - started:.0f} s")
+    for failure in total.failures:
+        print(f"FAILED {failure}")
+    summary = f"{total.passed} passed, {total.failed} failed"
+    if total.skipped:
+        summary += f", {total.skipped} skipped"
+    print(summary)
+    return 1 if total.failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
