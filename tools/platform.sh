@@ -1,11 +1,12 @@
 # Platform facts shared by the set-up and run scripts (sourced, not run).
 
 # Stops with a message unless this is a platform whose own packages carry ROS 1.
+# OS_RELEASE names another os-release file (the tests use it).
 check_platform() {
-  local id="" codename=""
-  if [ -r /etc/os-release ]; then
-    id=$(. /etc/os-release && echo "${ID:-}")
-    codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")
+  local id="" codename="" release="${OS_RELEASE:-/etc/os-release}"
+  if [ -r "$release" ]; then
+    id=$(. "$release" && echo "${ID:-}")
+    codename=$(. "$release" && echo "${VERSION_CODENAME:-}")
   fi
   case "$id/$codename" in
     debian/bookworm|ubuntu/jammy|ubuntu/noble) ;;

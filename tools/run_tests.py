@@ -1,7 +1,7 @@
 """Runs every test tier of the workspace and ends with one line: ``N passed, N failed``.
 
 Tiers, in order (design.md, "Tests"):
-  1. unit       pytest, no master:   <package>/test/unit/
+  1. unit       pytest, no master:   <package>/test/unit/, test/unit/
   2. description pytest, no master:  <package>/test/description/, test/description/
   3. rostest    a real master each:  <package>/test/rostest/*.test
   4. e2e        as a user types it:  test/e2e/
@@ -143,8 +143,8 @@ def main() -> int:
         print(f"\n=== {tier} ===", flush=True)
         tier_started = time.monotonic()
         if tier == "unit":
-            tally = run_pytest(tier, [os.path.join(p, "test", "unit") for p in packages()],
-                               args.keyword)
+            tally = run_pytest(tier, [os.path.join(p, "test", "unit") for p in packages()]
+                               + [os.path.join(REPO, "test", "unit")], args.keyword)
         elif tier == "description":
             tally = run_pytest(tier, [os.path.join(p, "test", "description") for p in packages()]
                                + [os.path.join(REPO, "test", "description")], args.keyword)
