@@ -25,7 +25,10 @@ apt_packages=(
   ros-core rosout rosbash python3-rospy python3-roslaunch python3-rostest python3-rosunit
   python3-actionlib python3-tf2-ros python3-tf2-geometry-msgs python3-wstool
   ros-std-msgs ros-std-srvs ros-geometry-msgs ros-sensor-msgs ros-nav-msgs
-  ros-visualization-msgs ros-trajectory-msgs ros-actionlib-msgs
+  ros-visualization-msgs ros-trajectory-msgs ros-actionlib-msgs ros-rosgraph-msgs ros-tf2-msgs
+  python3-std-msgs python3-std-srvs python3-geometry-msgs python3-sensor-msgs python3-nav-msgs
+  python3-visualization-msgs python3-trajectory-msgs python3-actionlib-msgs python3-rosgraph-msgs
+  python3-tf2-msgs python3-rospkg
   ros-robot-state-publisher joint-state-publisher joint-state-publisher-gui rviz
   liburdfdom-tools
   xvfb xauth x11-utils imagemagick

@@ -1,0 +1,137 @@
+"""What a URDF's ``<gazebo>`` blocks ask of the simulator.
+
+- ``<gazebo reference="link">`` with simple children: surface and look of that link
+  (:class:`LinkSurface`);
+- ``<gazebo>`` (or with a reference) holding ``<plugin>``: a model plugin (:class:`PluginSpec`);
+- ``<gazebo reference="link">`` holding ``<sensor>``: a sensor on that link, with its own
+  plugin (:class:`SensorSpec`).
+
+Parameter values stay as text here; each plugin reads its own with its defaults.
+"""
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+from typing import Dict, List, Optional, Tuple
+
+from urdf_tools.model import RobotModel, UrdfError
+
+# Gazebo's ODE defaults: mu = mu2 = 1; no self collision; gravity on.
+DEFAULT_MU = 1.0
+
+
+@dataclass
+class LinkSurface:
+    mu1: float = DEFAULT_MU
+    mu2: float = DEFAULT_MU
+    kp: Optional[float] = None
+    kd: Optional[float] = None
+    min_depth: Optional[float] = None
+    material: Optional[str] = None
+    self_collide: bool = False
+    gravity: bool = True
+
+
+@dataclass
+class PluginSpec:
+    """A ``<plugin name filename>``: its parameters as {tag: text}; ``element`` keeps nested ones."""
+
+    name: str
+    filename: str
+    params: Dict[str, str]
+    element: ET.Element
+    reference: Optional[str] = None
+
+    def text(self, tag: str, default: Optional[str] = None) -> Optional[str]:
+        return self.params.get(tag, default)
+
+
+@dataclass
+class SensorSpec:
+    """A ``<sensor>`` on a link; ``element`` is the whole sensor (ray, imu, update_rate...)."""
+
+    name: str
+    type: str
+    link: str
+    element: ET.Element
+    plugins: List[PluginSpec] = field(default_factory=list)
+
+
+@dataclass
+class GazeboTags:
+    surfaces: Dict[str, LinkSurface]
+    plugins: List[PluginSpec]
+    sensors: List[SensorSpec]
+    self_collide: bool = False
+
+
+def _float(text: str, what: str, source: str) -> float:
+    try:
+        return float(text)
+    except ValueError:
+        raise UrdfError(f"{source}: {what} '{text}' is not a number") from None
+
+
+def _bool(text: str) -> bool:
+    return text.strip().lower() in ("1", "true")
+
+
+def _plugin(element: ET.Element, reference: Optional[str], source: str) -> PluginSpec:
+    filename = element.get("filename", "")
+    if not filename:
+        raise UrdfError(f"{source}: a <plugin> has no filename")
+    params = {child.tag: (child.text or "").strip() for child in element}
+    return PluginSpec(element.get("name", filename), filename, params, element, reference)
+
+
+def read_gazebo_tags(model: RobotModel) -> GazeboTags:
+    source = model.source
+    surfaces: Dict[str, LinkSurface] = {}
+    plugins: List[PluginSpec] = []
+    sensors: List[SensorSpec] = []
+    robot_self_collide = False
+    for reference, block in model.gazebo:
+        if reference is not None and reference not in model.links:
+            if reference in model.joints:
+                continue  # joint blocks (provideFeedback...) mean nothing here
+            raise UrdfError(f"{source}: <gazebo reference='{reference}'> names no link")
+        for child in block:
+            tag = child.tag
+            text = (child.text or "").strip()
+            if tag == "plugin":
+                plugins.append(_plugin(child, reference, source))
+            elif tag == "sensor":
+                if reference is None:
+                    raise UrdfError(f"{source}: <sensor '{child.get('name')}'> needs "
+                                    "<gazebo reference='link'>")
+                sensors.append(SensorSpec(child.get("name", ""), child.get("type", ""),
+                                          reference, child,
+                                          [_plugin(p, reference, source)
+                                           for p in child.findall("plugin")]))
+            elif reference is None:
+                if tag == "self_collide":
+                    robot_self_collide = _bool(text)
+            else:
+                surface = surfaces.setdefault(reference, LinkSurface())
+                what = f"<gazebo reference='{reference}'> <{tag}>"
+                if tag == "mu1":
+                    surface.mu1 = _float(text, what, source)
+                elif tag == "mu2":
+                    surface.mu2 = _float(text, what, source)
+                elif tag == "kp":
+                    surface.kp = _float(text, what, source)
+                elif tag == "kd":
+                    surface.kd = _float(text, what, source)
+                elif tag == "minDepth":
+                    surface.min_depth = _float(text, what, source)
+                elif tag == "material":
+                    surface.material = text
+                elif tag == "selfCollide":
+                    surface.self_collide = _bool(text)
+                elif tag in ("gravity", "turnGravityOff"):
+                    surface.gravity = _bool(text) if tag == "gravity" else not _bool(text)
+    return GazeboTags(surfaces, plugins, sensors, robot_self_collide)
+
+
+def plugin_joint_names(spec: PluginSpec, tags: Tuple[str, ...]) -> List[str]:
+    return [spec.params[tag] for tag in tags if tag in spec.params]

@@ -1,0 +1,154 @@
+"""What every plugin gets and does.
+
+A plugin is built with a :class:`PluginContext` (the pybullet client, the robot body, the
+namespace, a :class:`Bus` to ROS, a seeded random generator) and its spec from the URDF.
+Each physics step the world calls ``before_step`` (apply commands) and ``after_step``
+(sense and publish) with the simulated time in nanoseconds. Plugins read all their
+parameters in the constructor; a missing required one raises :class:`PluginError`.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Callable, Optional, Sequence
+
+import genpy
+import numpy as np
+
+from sim_bridge.gazebo_tags import PluginSpec
+
+
+class PluginError(ValueError):
+    """A plugin that cannot run as written; the message names the plugin and the cause."""
+
+
+class Bus:
+    """The plugins' way to ROS. The ROS adapter implements it with rospy; unit tests with a
+    recorder. Topic names given here are already resolved (absolute)."""
+
+    def publisher(self, topic: str, msg_class, queue_size: int = 10, latch: bool = False):
+        raise NotImplementedError
+
+    def subscriber(self, topic: str, msg_class, callback: Callable[[Any], None]):
+        raise NotImplementedError
+
+    def send_transforms(self, transforms: Sequence[Any]) -> None:
+        raise NotImplementedError
+
+    def info(self, text: str) -> None:
+        raise NotImplementedError
+
+    def warn(self, text: str) -> None:
+        raise NotImplementedError
+
+    def warn_throttled(self, key: str, period: float, text: str) -> None:
+        raise NotImplementedError
+
+    def get_param(self, name: str, default: Any = None) -> Any:
+        return default
+
+
+@dataclass
+class PluginContext:
+    client: int
+    robot: Any  # RobotBody
+    model_name: str
+    namespace: str  # robotNamespace from spawn_model, "" for none
+    bus: Bus
+    rng: np.random.Generator
+    step_size: float
+    gravity: Sequence[float] = (0.0, 0.0, -9.8)
+    # cast_rays(starts (N, 3), ends (N, 3)) -> pybullet.rayTestBatch's results
+    cast_rays: Optional[Callable[[np.ndarray, np.ndarray], list]] = None
+
+
+def resolve_topic(namespace: str, topic: str) -> str:
+    """Gazebo's rule: an absolute topic stays; a relative one goes under the namespace."""
+    if topic.startswith("/"):
+        return topic
+    namespace = namespace.strip("/")
+    return f"/{namespace}/{topic}" if namespace else f"/{topic}"
+
+
+def stamp(now_ns: int) -> genpy.Time:
+    return genpy.Time(now_ns // 1_000_000_000, now_ns % 1_000_000_000)
+
+
+class Plugin:
+    """Base of model plugins and sensor plugins."""
+
+    def __init__(self, context: PluginContext, spec: PluginSpec):
+        self.context = context
+        self.spec = spec
+        namespace = spec.text("robotNamespace")
+        self.namespace = (namespace if namespace is not None else context.namespace).strip("/")
+
+    # --- parameters -------------------------------------------------------------------
+    def param(self, tag: str, default: Optional[str] = None) -> Optional[str]:
+        return self.spec.text(tag, default)
+
+    def number(self, tag: str, default: float) -> float:
+        text = self.spec.text(tag)
+        if text is None or text == "":
+            return default
+        try:
+            value = float(text)
+        except ValueError:
+            raise PluginError(f"plugin '{self.spec.name}' ({self.spec.filename}): <{tag}> "
+                              f"'{text}' is not a number") from None
+        if not np.isfinite(value):
+            raise PluginError(f"plugin '{self.spec.name}': <{tag}> must be finite")
+        return value
+
+    def flag(self, tag: str, default: bool) -> bool:
+        text = self.spec.text(tag)
+        if text is None or text == "":
+            return default
+        return text.strip().lower() in ("1", "true")
+
+    def joint(self, tag: str, default: Optional[str] = None) -> str:
+        name = self.spec.text(tag, default)
+        if not name:
+            raise PluginError(f"plugin '{self.spec.name}' ({self.spec.filename}) needs "
+                              f"<{tag}>, the name of a joint")
+        if name not in self.context.robot.joint_index:
+            raise PluginError(f"plugin '{self.spec.name}' ({self.spec.filename}): <{tag}> "
+                              f"names joint '{name}', which model '{self.context.model_name}' "
+                              "does not have")
+        return name
+
+    def topic(self, name: str) -> str:
+        return resolve_topic(self.namespace, name)
+
+    # --- the step ---------------------------------------------------------------------
+    def before_step(self, now_ns: int) -> None:
+        """Applies commands to the bodies before a physics step."""
+
+    def after_step(self, now_ns: int) -> None:
+        """Reads the result of a physics step and publishes."""
+
+    def reset(self, now_ns: int) -> None:
+        """The world was reset: forget integrated state."""
+
+    def close(self) -> None:
+        """The model is deleted: stop talking to ROS."""
+
+
+class Rate:
+    """Fires once per period of simulated time (period 0: every step), like Gazebo's
+    updateRate."""
+
+    def __init__(self, rate_hz: float):
+        self.period_ns = int(round(1e9 / rate_hz)) if rate_hz > 0 else 0
+        self.next_ns = 0
+
+    def due(self, now_ns: int) -> bool:
+        if now_ns < self.next_ns:
+            return False
+        if self.period_ns:
+            self.next_ns += self.period_ns
+            if self.next_ns <= now_ns:  # fell behind (time jumped): keep the period from now
+                self.next_ns = now_ns + self.period_ns
+        return True
+
+    def reset(self, now_ns: int) -> None:
+        self.next_ns = now_ns

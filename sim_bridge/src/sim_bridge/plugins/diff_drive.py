@@ -1,0 +1,209 @@
+"""``libgazebo_ros_diff_drive.so``: two driven wheels, cmd_vel in, odometry and TF out.
+
+Parameters, names and defaults as gazebo_ros (noetic) reads them:
+
+leftJoint (left_joint), rightJoint (right_joint), wheelSeparation (0.34 m),
+wheelDiameter (0.15 m), wheelTorque (5 N m), wheelAcceleration (0: no limit, rad/s^2),
+commandTopic (cmd_vel), odometryTopic (odom), odometryFrame (odom),
+robotBaseFrame (base_footprint), publishWheelTF (false), publishOdomTF (true),
+publishWheelJointState (false), publishTf (true: false turns all TF off),
+odometrySource (world | encoder, or 1 | 0; world), updateRate (100 Hz), robotNamespace.
+legacyMode is accepted and has no effect: the wheels always turn the right way round.
+
+Differences from Gazebo, on purpose: encoder odometry's twist keeps the sign of v; a
+``cmd_vel`` with NaN or inf is ignored with a throttled warning instead of spinning the
+wheels at NaN.
+"""
+from __future__ import annotations
+
+import math
+
+import pybullet as pb
+from geometry_msgs.msg import TransformStamped, Twist
+from nav_msgs.msg import Odometry
+from sensor_msgs.msg import JointState
+
+from sim_bridge.drive_kinematics import body_twist, integrate, limit_change, wheel_speeds
+from sim_bridge.plugins.base import Plugin, PluginError, Rate, stamp
+from sim_bridge.poses import quaternion_from_rpy, yaw_from_quaternion
+
+# gazebo_ros's odometry covariance: x, y and yaw known well, z, roll, pitch not at all.
+POSE_COVARIANCE = [0.0] * 36
+for _index, _value in ((0, 1e-5), (7, 1e-5), (14, 1e12), (21, 1e12), (28, 1e12), (35, 1e-3)):
+    POSE_COVARIANCE[_index] = _value
+TWIST_COVARIANCE = list(POSE_COVARIANCE)
+
+
+class DiffDrive(Plugin):
+    def __init__(self, context, spec):
+        super().__init__(context, spec)
+        self.left_joint = self.joint("leftJoint", "left_joint")
+        self.right_joint = self.joint("rightJoint", "right_joint")
+        self.separation = self.number("wheelSeparation", 0.34)
+        self.radius = self.number("wheelDiameter", 0.15) / 2.0
+        if self.separation <= 0 or self.radius <= 0:
+            raise PluginError(f"plugin '{spec.name}': wheelSeparation and wheelDiameter must "
+                              "be positive")
+        self.torque = self.number("wheelTorque", 5.0)
+        self.acceleration = self.number("wheelAcceleration", 0.0)
+        self.odom_frame = self.param("odometryFrame", "odom")
+        self.base_frame = self.param("robotBaseFrame", "base_footprint")
+        self.publish_tf = self.flag("publishTf", True)
+        self.publish_odom_tf = self.flag("publishOdomTF", True) and self.publish_tf
+        self.publish_wheel_tf = self.flag("publishWheelTF", False) and self.publish_tf
+        self.publish_joint_state = self.flag("publishWheelJointState", False)
+        source = (self.param("odometrySource", "world") or "world").strip().lower()
+        if source not in ("world", "encoder", "1", "0"):
+            raise PluginError(f"plugin '{spec.name}': odometrySource '{source}' is neither "
+                              "world nor encoder")
+        self.encoder = source in ("encoder", "0")
+        self.rate = Rate(self.number("updateRate", 100.0))
+        bus = context.bus
+        self.command_topic = self.topic(self.param("commandTopic", "cmd_vel"))
+        self.odom_out = bus.publisher(self.topic(self.param("odometryTopic", "odom")), Odometry,
+                                      queue_size=1)
+        self.joints_out = (bus.publisher(self.topic("joint_states"), JointState, queue_size=1)
+                           if self.publish_joint_state else None)
+        self._subscription = bus.subscriber(self.command_topic, Twist, self._on_command)
+        self.command = (0.0, 0.0)
+        self.applied = (None, None)
+        self.wheel_target = [0.0, 0.0]
+        self._reset_odometry()
+        self._last_ns = None
+        self._joints = [context.robot.joint_index[self.left_joint],
+                        context.robot.joint_index[self.right_joint]]
+
+    def _reset_odometry(self) -> None:
+        self.pose = (0.0, 0.0, 0.0)  # encoder odometry: x, y, yaw since spawn or reset
+        self.encoder_twist = (0.0, 0.0)
+
+    # --- ROS side (called from rospy's threads: only stores) --------------------------
+    def _on_command(self, message: Twist) -> None:
+        linear, angular = message.linear.x, message.angular.z
+        if not (math.isfinite(linear) and math.isfinite(angular)):
+            self.context.bus.warn_throttled(
+                f"{self.command_topic}:nan", 5.0,
+                f"{self.command_topic}: ignoring a command with linear.x={linear}, "
+                f"angular.z={angular}; both must be finite numbers")
+            return
+        self.command = (linear, angular)
+
+    # --- the step -------------------------------------------------------------------------
+    def before_step(self, now_ns: int) -> None:
+        targets = wheel_speeds(*self.command, self.separation, self.radius)
+        max_change = self.acceleration * self.context.step_size
+        for side in (0, 1):
+            self.wheel_target[side] = limit_change(self.wheel_target[side], targets[side],
+                                                   max_change)
+        if tuple(self.wheel_target) != self.applied:
+            pb.setJointMotorControlArray(
+                self.context.robot.id, self._joints, pb.VELOCITY_CONTROL,
+                targetVelocities=list(self.wheel_target), forces=[self.torque, self.torque],
+                physicsClientId=self.context.client)
+            self.applied = tuple(self.wheel_target)
+
+    def after_step(self, now_ns: int) -> None:
+        if self.encoder:
+            self._integrate_encoders(now_ns)
+        if not self.rate.due(now_ns):
+            return
+        time = stamp(now_ns)
+        odometry = self._odometry(time)
+        self.odom_out.publish(odometry)
+        transforms = []
+        if self.publish_odom_tf:
+            transform = TransformStamped()
+            transform.header.stamp = time
+            transform.header.frame_id = self.odom_frame
+            transform.child_frame_id = self.base_frame
+            transform.transform.translation.x = odometry.pose.pose.position.x
+            transform.transform.translation.y = odometry.pose.pose.position.y
+            transform.transform.translation.z = odometry.pose.pose.position.z
+            transform.transform.rotation = odometry.pose.pose.orientation
+            transforms.append(transform)
+        if self.publish_wheel_tf:
+            transforms.extend(self._wheel_transforms(time))
+        if transforms:
+            self.context.bus.send_transforms(transforms)
+        if self.joints_out is not None:
+            states = self.context.robot.joint_states([self.left_joint, self.right_joint])
+            message = JointState()
+            message.header.stamp = time
+            message.name = [self.left_joint, self.right_joint]
+            message.position = [s[0] for s in states]
+            message.velocity = [s[1] for s in states]
+            message.effort = [s[2] for s in states]
+            self.joints_out.publish(message)
+
+    def _integrate_encoders(self, now_ns: int) -> None:
+        if self._last_ns is None:
+            self._last_ns = now_ns
+            return
+        dt = (now_ns - self._last_ns) / 1e9
+        self._last_ns = now_ns
+        states = self.context.robot.joint_states([self.left_joint, self.right_joint])
+        linear, angular = body_twist(states[0][1], states[1][1], self.separation, self.radius)
+        self.pose = integrate(*self.pose, linear, angular, dt)
+        self.encoder_twist = (linear, angular)
+
+    def _odometry(self, time) -> Odometry:
+        message = Odometry()
+        message.header.stamp = time
+        message.header.frame_id = self.odom_frame
+        message.child_frame_id = self.base_frame
+        if self.encoder:
+            x, y, yaw = self.pose
+            position = (x, y, 0.0)
+            orientation = quaternion_from_rpy(0.0, 0.0, yaw)
+            linear, angular = self.encoder_twist
+            twist = (linear, 0.0, angular)
+        else:
+            # Gazebo's "world" source: the true pose in the world, the twist in the body frame
+            position, orientation = self.context.robot.base_pose()
+            world_linear, world_angular = self.context.robot.base_twist()
+            yaw = yaw_from_quaternion(orientation)
+            forward = math.cos(yaw) * world_linear[0] + math.sin(yaw) * world_linear[1]
+            sideways = math.cos(yaw) * world_linear[1] - math.sin(yaw) * world_linear[0]
+            twist = (forward, sideways, world_angular[2])
+        pose = message.pose.pose
+        pose.position.x, pose.position.y, pose.position.z = position
+        pose.orientation.x, pose.orientation.y, pose.orientation.z, pose.orientation.w = \
+            orientation
+        message.twist.twist.linear.x, message.twist.twist.linear.y = twist[0], twist[1]
+        message.twist.twist.angular.z = twist[2]
+        message.pose.covariance = POSE_COVARIANCE
+        message.twist.covariance = TWIST_COVARIANCE
+        return message
+
+    def _wheel_transforms(self, time):
+        robot = self.context.robot
+        transforms = []
+        for joint_name in (self.left_joint, self.right_joint):
+            joint = robot.model.joints[joint_name]
+            parent = robot.link_pose(joint.parent)
+            child = robot.link_pose(joint.child)
+            inverse = pb.invertTransform(*parent)
+            position, orientation = pb.multiplyTransforms(*inverse, *child)
+            transform = TransformStamped()
+            transform.header.stamp = time
+            transform.header.frame_id = joint.parent
+            transform.child_frame_id = joint.child
+            transform.transform.translation.x, transform.transform.translation.y, \
+                transform.transform.translation.z = position
+            rotation = transform.transform.rotation
+            rotation.x, rotation.y, rotation.z, rotation.w = orientation
+            transforms.append(transform)
+        return transforms
+
+    def reset(self, now_ns: int) -> None:
+        self.command = (0.0, 0.0)
+        self.wheel_target = [0.0, 0.0]
+        self._reset_odometry()
+        self._last_ns = None
+        self.rate.reset(now_ns)
+
+    def close(self) -> None:
+        self._subscription.unregister()
+        self.odom_out.unregister()
+        if self.joints_out is not None:
+            self.joints_out.unregister()

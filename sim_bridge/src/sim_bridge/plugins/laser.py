@@ -1,0 +1,122 @@
+"""``<sensor type="ray|gpu_ray">`` with ``libgazebo_ros_laser.so`` / ``libgazebo_ros_gpu_laser.so``.
+
+From the sensor: ``<pose>`` (in the link's frame), ``<update_rate>`` (Hz; 0 every step),
+``<ray><scan><horizontal>`` samples, min_angle, max_angle; ``<range>`` min, max,
+resolution; ``<noise>`` gaussian mean and stddev (drawn from the world's seeded generator).
+From the plugin: topicName (/world), frameName (/world), robotNamespace — gazebo_ros's
+defaults, odd as they are; write both.
+
+Rays are cast in the sensor's frame from the link's true pose, rotation included, from
+``range min`` to ``range max`` (as Gazebo's rays start at the minimum range). A ray that
+hits nothing reads ``+inf`` (REP 117), not Gazebo's max range; the sensor is always on;
+stamps are simulated time.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pybullet as pb
+from sensor_msgs.msg import LaserScan
+
+from sim_bridge.plugins.base import Plugin, PluginError, Rate, stamp
+from sim_bridge.poses import pose6_to_position_quaternion, quaternion_matrix
+
+
+def _number(element, path: str, default: float, sensor: str) -> float:
+    text = element.findtext(path) if element is not None else None
+    if text is None or not text.strip():
+        return default
+    try:
+        return float(text)
+    except ValueError:
+        raise PluginError(f"sensor '{sensor}': <{path}> '{text}' is not a number") from None
+
+
+class Laser(Plugin):
+    def __init__(self, context, spec, sensor):
+        super().__init__(context, spec)
+        element = sensor.element
+        name = sensor.name
+        self.link = sensor.link
+        pose_text = element.findtext("pose")
+        pose = tuple(float(v) for v in pose_text.split()) if pose_text else (0.0,) * 6
+        if len(pose) != 6:
+            raise PluginError(f"sensor '{name}': <pose> needs 6 numbers")
+        self.sensor_position, self.sensor_orientation = pose6_to_position_quaternion(pose)
+        ray = element.find("ray")
+        if ray is None:
+            raise PluginError(f"sensor '{name}' of type {sensor.type} needs a <ray> element")
+        samples = int(_number(ray, "scan/horizontal/samples", 640, name))
+        if samples < 1:
+            raise PluginError(f"sensor '{name}': <samples> must be at least 1")
+        self.angle_min = _number(ray, "scan/horizontal/min_angle", 0.0, name)
+        self.angle_max = _number(ray, "scan/horizontal/max_angle", 0.0, name)
+        self.range_min = _number(ray, "range/min", 0.0, name)
+        self.range_max = _number(ray, "range/max", 0.0, name)
+        if not 0 <= self.range_min < self.range_max:
+            raise PluginError(f"sensor '{name}': needs 0 <= range min < range max "
+                              f"(got {self.range_min}, {self.range_max})")
+        self.resolution = _number(ray, "range/resolution", 0.0, name)
+        noise = ray.find("noise")
+        self.noise_mean = _number(noise, "mean", 0.0, name)
+        self.noise_stddev = _number(noise, "stddev", 0.0, name)
+        if noise is not None and (noise.findtext("type") or "gaussian").strip() != "gaussian":
+            raise PluginError(f"sensor '{name}': only gaussian noise is modelled")
+        update_rate = _number(element, "update_rate", 0.0, name)
+        self.rate = Rate(update_rate)
+        self.scan_time = 1.0 / update_rate if update_rate > 0 else context.step_size
+        angles = (np.linspace(self.angle_min, self.angle_max, samples) if samples > 1
+                  else np.array([self.angle_min]))
+        self.increment = (self.angle_max - self.angle_min) / (samples - 1) if samples > 1 else 0.0
+        self.directions = np.stack([np.cos(angles), np.sin(angles), np.zeros(samples)], axis=1)
+        self.frame = self.param("frameName", "/world")
+        self.output = context.bus.publisher(self.topic(self.param("topicName", "/world")),
+                                            LaserScan, queue_size=1)
+        if self.link not in context.robot.link_index:
+            raise PluginError(f"sensor '{name}' is on link '{self.link}', which the model "
+                              "does not have")
+
+    def sensor_pose(self):
+        link_position, link_orientation = self.context.robot.link_pose(self.link)
+        return pb.multiplyTransforms(link_position, link_orientation, self.sensor_position,
+                                     self.sensor_orientation)
+
+    def measure(self) -> np.ndarray:
+        """One scan's ranges (metres; +inf where nothing is within range)."""
+        position, orientation = self.sensor_pose()
+        world_directions = self.directions @ quaternion_matrix(orientation).T
+        origin = np.asarray(position)
+        starts = origin + world_directions * self.range_min
+        ends = origin + world_directions * self.range_max
+        results = self.context.cast_rays(starts, ends)
+        fractions = np.array([r[2] if r[0] >= 0 else math.inf for r in results])
+        ranges = self.range_min + fractions * (self.range_max - self.range_min)
+        hit = np.isfinite(ranges)
+        if self.noise_stddev > 0 or self.noise_mean != 0:
+            ranges[hit] += self.context.rng.normal(self.noise_mean, self.noise_stddev,
+                                                   int(hit.sum()))
+        if self.resolution > 0:
+            ranges[hit] = np.round(ranges[hit] / self.resolution) * self.resolution
+        return ranges
+
+    def after_step(self, now_ns: int) -> None:
+        if not self.rate.due(now_ns):
+            return
+        message = LaserScan()
+        message.header.stamp = stamp(now_ns)
+        message.header.frame_id = self.frame
+        message.angle_min = self.angle_min
+        message.angle_max = self.angle_max
+        message.angle_increment = self.increment
+        message.scan_time = self.scan_time
+        message.range_min = self.range_min
+        message.range_max = self.range_max
+        message.ranges = self.measure().tolist()
+        self.output.publish(message)
+
+    def reset(self, now_ns: int) -> None:
+        self.rate.reset(now_ns)
+
+    def close(self) -> None:
+        self.output.unregister()

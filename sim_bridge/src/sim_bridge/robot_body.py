@@ -1,0 +1,246 @@
+"""A robot from a URDF as a pybullet body, seen through its URDF names.
+
+pybullet differs from Gazebo in ways that matter here, and this module hides them:
+
+- a link without ``<inertial>`` gets 1 kg and unit inertia from pybullet's importer
+  (Gazebo lumps it into its parent): such links get a negligible inertial before loading;
+- the base pose pybullet reports is the centre of mass's, not the root link frame's:
+  poses and twists here are of the URDF link frames;
+- every joint gets a velocity motor that brakes it: motors are switched off, so passive
+  joints (casters) turn freely; a joint's URDF ``friction`` becomes a braking motor of
+  that force, which is how pybullet models joint friction;
+- pybullet's URDF importer pads every collision shape by a 1 mm margin, which makes a
+  5 cm wheel roll 2% too far per turn: primitive collision shapes are shrunk by it, so
+  that contacts happen at the URDF's own surfaces;
+- ``package://`` mesh URIs are resolved to files (pybullet knows no ROS packages).
+"""
+from __future__ import annotations
+
+import os
+import tempfile
+import xml.etree.ElementTree as ET
+from typing import Dict, List, Mapping, Sequence, Tuple
+
+import numpy as np
+import pybullet as pb
+
+from sim_bridge.gazebo_tags import GazeboTags
+from sim_bridge.materials import gazebo_colour
+from urdf_tools.model import RobotModel, UrdfError
+
+# What a link without <inertial> weighs in pybullet: small against any real link, large
+# enough to keep the solver well conditioned.
+NEGLIGIBLE_MASS = 1e-3
+NEGLIGIBLE_INERTIA = 1e-7
+# the collision margin pybullet's URDF importer adds around every shape (metres)
+URDF_COLLISION_MARGIN = 0.001
+
+Vec3 = Tuple[float, float, float]
+Quat = Tuple[float, float, float, float]
+
+
+def resolve_package_uri(uri: str, source: str) -> str:
+    """``package://pkg/path`` or ``file://path`` → a file path."""
+    if uri.startswith("file://"):
+        return uri[len("file://"):]
+    if not uri.startswith("package://"):
+        return uri
+    package, _, rest = uri[len("package://"):].partition("/")
+    import rospkg  # only descriptions with package:// meshes need a ROS environment
+    try:
+        return os.path.join(rospkg.RosPack().get_path(package), rest)
+    except rospkg.ResourceNotFound:
+        raise UrdfError(f"{source}: mesh '{uri}': ROS package '{package}' not found "
+                        "(is the workspace sourced?)") from None
+
+
+def _shrink_by_margin(geometry: ET.Element) -> None:
+    """Takes pybullet's collision margin off a primitive shape's size."""
+    margin = URDF_COLLISION_MARGIN
+    for shape in geometry:
+        if shape.tag == "box":
+            sizes = [float(v) for v in shape.get("size", "").split()]
+            shape.set("size", " ".join(repr(max(v - 2 * margin, v / 2)) for v in sizes))
+        elif shape.tag in ("cylinder", "sphere"):
+            radius = float(shape.get("radius", "0"))
+            shape.set("radius", repr(max(radius - margin, radius / 2)))
+            if shape.tag == "cylinder":
+                length = float(shape.get("length", "0"))
+                shape.set("length", repr(max(length - 2 * margin, length / 2)))
+
+
+def prepare_urdf(xml: str, model: RobotModel, warn) -> str:
+    """The URDF text pybullet should load (see the module's notes)."""
+    root = ET.fromstring(xml)
+    for link in root.findall("link"):
+        for geometry in link.findall("collision/geometry"):
+            _shrink_by_margin(geometry)
+        if link.find("inertial") is None:
+            inertial = ET.SubElement(link, "inertial")
+            ET.SubElement(inertial, "mass", value=str(NEGLIGIBLE_MASS))
+            ET.SubElement(inertial, "inertia", ixx=str(NEGLIGIBLE_INERTIA), ixy="0", ixz="0",
+                          iyy=str(NEGLIGIBLE_INERTIA), iyz="0", izz=str(NEGLIGIBLE_INERTIA))
+        for mesh in link.iter("mesh"):
+            path = resolve_package_uri(mesh.get("filename", ""), model.source)
+            if path.lower().endswith(".dae"):
+                warn(f"{model.source}: link '{link.get('name')}' mesh '{path}': pybullet "
+                     "cannot read COLLADA (.dae); use OBJ or STL. The shape is left out.")
+            elif not os.path.isfile(path):
+                raise UrdfError(f"{model.source}: link '{link.get('name')}' mesh '{path}' "
+                                "is not a file")
+            mesh.set("filename", path)
+    # <gazebo> and <transmission> mean nothing to pybullet's importer
+    for tag in ("gazebo", "transmission"):
+        for element in root.findall(tag):
+            root.remove(element)
+    return ET.tostring(root, encoding="unicode")
+
+
+class RobotBody:
+    """A loaded URDF robot: link and joint access by name, in link frames."""
+
+    def __init__(self, client: int, model: RobotModel, tags: GazeboTags, xml: str,
+                 position: Sequence[float], orientation: Sequence[float], warn):
+        self.client = client
+        self.model = model
+        prepared = prepare_urdf(xml, model, warn)
+        flags = pb.URDF_USE_INERTIA_FROM_FILE
+        if tags.self_collide or any(s.self_collide for s in tags.surfaces.values()):
+            flags |= pb.URDF_USE_SELF_COLLISION | pb.URDF_USE_SELF_COLLISION_EXCLUDE_PARENT
+        with tempfile.NamedTemporaryFile("w", suffix=".urdf", delete=False) as stream:
+            stream.write(prepared)
+            path = stream.name
+        try:
+            self.id = pb.loadURDF(path, list(position), list(orientation), flags=flags,
+                                  physicsClientId=client)
+        except pb.error as error:
+            raise UrdfError(f"{model.source}: pybullet could not load it: {error}") from None
+        finally:
+            os.unlink(path)
+        self.link_index: Dict[str, int] = {model.root(): -1}
+        self.joint_index: Dict[str, int] = {}
+        for index in range(pb.getNumJoints(self.id, physicsClientId=client)):
+            info = pb.getJointInfo(self.id, index, physicsClientId=client)
+            self.joint_index[info[1].decode()] = index
+            self.link_index[info[12].decode()] = index
+        inertial = pb.getDynamicsInfo(self.id, -1, physicsClientId=client)
+        # root link frame expressed in the base's centre-of-mass frame
+        self._com_to_link = pb.invertTransform(inertial[3], inertial[4])
+        self._weightless: List[Tuple[int, float]] = []
+        self._apply_joint_settings()
+        self._apply_surfaces(tags, warn)
+
+    # --- set-up ---------------------------------------------------------------------
+    def _apply_joint_settings(self) -> None:
+        for name, index in self.joint_index.items():
+            joint = self.model.joints.get(name)
+            if joint is None or not joint.movable:
+                continue
+            # switch pybullet's default braking motor off; keep the URDF's joint friction
+            pb.setJointMotorControl2(self.id, index, pb.VELOCITY_CONTROL, targetVelocity=0.0,
+                                     force=joint.friction, physicsClientId=self.client)
+            pb.changeDynamics(self.id, index, jointDamping=joint.damping,
+                              linearDamping=0.0, angularDamping=0.0,
+                              physicsClientId=self.client)
+        pb.changeDynamics(self.id, -1, linearDamping=0.0, angularDamping=0.0,
+                          physicsClientId=self.client)
+
+    def _apply_surfaces(self, tags: GazeboTags, warn) -> None:
+        for link, index in self.link_index.items():
+            surface = tags.surfaces.get(link)
+            settings = dict(lateralFriction=1.0, rollingFriction=0.0, spinningFriction=0.0)
+            if surface is not None:
+                # pybullet multiplies the two surfaces' friction; the world's surfaces are
+                # 1.0, so a contact gets the link's mu, as Gazebo's min(mu_a, mu_b) would
+                settings["lateralFriction"] = surface.mu1
+                if surface.mu2 != surface.mu1 and surface.mu1 > 0:
+                    settings["anisotropicFriction"] = [1.0, surface.mu2 / surface.mu1, 1.0]
+                if surface.kp is not None or surface.kd is not None:
+                    settings["contactStiffness"] = surface.kp if surface.kp is not None else 1e6
+                    settings["contactDamping"] = surface.kd if surface.kd is not None else 1.0
+                if surface.material:
+                    colour = gazebo_colour(surface.material)
+                    if colour is None:
+                        warn(f"{self.model.source}: link '{link}': unknown material "
+                             f"'{surface.material}'; its URDF colour stays")
+                    else:
+                        self.set_colour(index, colour)
+                if not surface.gravity:
+                    mass = pb.getDynamicsInfo(self.id, index, physicsClientId=self.client)[0]
+                    self._weightless.append((index, mass))
+            pb.changeDynamics(self.id, index, physicsClientId=self.client, **settings)
+
+    def set_colour(self, link_index: int, rgba: Sequence[float]) -> None:
+        pb.changeVisualShape(self.id, link_index, rgbaColor=list(rgba),
+                             physicsClientId=self.client)
+
+    def apply_weightlessness(self, gravity: Sequence[float]) -> None:
+        """Cancels gravity on links whose ``<gravity>`` is false (pybullet has no per-link
+        switch): an opposite force at their centre of mass, each step."""
+        for index, mass in self._weightless:
+            com = (pb.getBasePositionAndOrientation(self.id, physicsClientId=self.client)[0]
+                   if index == -1 else
+                   pb.getLinkState(self.id, index, physicsClientId=self.client)[0])
+            force = [-mass * g for g in gravity]
+            pb.applyExternalForce(self.id, index, force, com, pb.WORLD_FRAME,
+                                  physicsClientId=self.client)
+
+    # --- reading ------------------------------------------------------------------
+    def link_pose(self, link: str) -> Tuple[Vec3, Quat]:
+        """World pose of a URDF link frame."""
+        index = self.link_index[link]
+        if index == -1:
+            return self.base_pose()
+        state = pb.getLinkState(self.id, index, computeForwardKinematics=1,
+                                physicsClientId=self.client)
+        return state[4], state[5]
+
+    def base_pose(self) -> Tuple[Vec3, Quat]:
+        com_position, com_orientation = pb.getBasePositionAndOrientation(
+            self.id, physicsClientId=self.client)
+        return pb.multiplyTransforms(com_position, com_orientation, *self._com_to_link)
+
+    def base_twist(self) -> Tuple[np.ndarray, np.ndarray]:
+        """Linear velocity of the root link frame's origin and angular velocity, world frame."""
+        linear, angular = pb.getBaseVelocity(self.id, physicsClientId=self.client)
+        com_position, _ = pb.getBasePositionAndOrientation(self.id, physicsClientId=self.client)
+        position, _ = self.base_pose()
+        offset = np.asarray(position) - np.asarray(com_position)
+        return np.asarray(linear) + np.cross(angular, offset), np.asarray(angular)
+
+    def set_base_state(self, position: Sequence[float], orientation: Sequence[float],
+                       linear: Sequence[float] = (0, 0, 0),
+                       angular: Sequence[float] = (0, 0, 0)) -> None:
+        """Puts the root link frame at a pose with a twist (of its origin), world frame."""
+        com_in_link = pb.invertTransform(*self._com_to_link)
+        com_position, com_orientation = pb.multiplyTransforms(position, orientation,
+                                                              *com_in_link)
+        pb.resetBasePositionAndOrientation(self.id, com_position, com_orientation,
+                                           physicsClientId=self.client)
+        offset = np.asarray(com_position) - np.asarray(position)
+        com_linear = np.asarray(linear) + np.cross(angular, offset)
+        pb.resetBaseVelocity(self.id, com_linear.tolist(), list(angular),
+                             physicsClientId=self.client)
+
+    def joint_position_velocity(self, joint: str) -> Tuple[float, float]:
+        state = pb.getJointState(self.id, self.joint_index[joint], physicsClientId=self.client)
+        return state[0], state[1]
+
+    def joint_states(self, joints: Sequence[str]) -> List[Tuple[float, float, float]]:
+        """(position, velocity, applied effort) of each joint."""
+        states = pb.getJointStates(self.id, [self.joint_index[j] for j in joints],
+                                   physicsClientId=self.client)
+        return [(s[0], s[1], s[3]) for s in states]
+
+    def reset_joints(self, positions: Mapping[str, float]) -> None:
+        for name, value in positions.items():
+            pb.resetJointState(self.id, self.joint_index[name], value, 0.0,
+                               physicsClientId=self.client)
+
+    def movable_joints(self) -> List[str]:
+        return [name for name in self.joint_index
+                if name in self.model.joints and self.model.joints[name].movable]
+
+    def remove(self) -> None:
+        pb.removeBody(self.id, physicsClientId=self.client)
+

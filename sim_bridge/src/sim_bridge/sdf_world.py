@@ -1,0 +1,331 @@
+"""Reads the SDF that Gazebo reads: worlds and models, the subset course worlds use.
+
+A world is ``<physics>`` (step size), ``<gravity>``, ``<include>`` of ``model://NAME``
+(searched in ``GAZEBO_MODEL_PATH``, then in sim_bridge's ``models/``), and ``<model>``
+with ``<static>``, ``<pose>`` and links of box, cylinder, sphere, plane and mesh geometry.
+Lights, scenes, GUI and plugins of the world are accepted and ignored.
+
+The result is plain data (:class:`WorldSpec`, :class:`ModelSpec`); turning it into
+pybullet bodies is :mod:`sim_bridge.world`'s job. Every error names the file and the
+element, and for an unknown ``model://`` the folders searched.
+"""
+from __future__ import annotations
+
+import os
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+from typing import List, Optional, Sequence, Tuple
+
+from sim_bridge.materials import gazebo_colour
+
+Pose6 = Tuple[float, float, float, float, float, float]
+ZERO_POSE: Pose6 = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+PACKAGE_MODELS = os.path.normpath(os.path.join(os.path.dirname(__file__), "..", "..", "models"))
+# Gazebo's defaults when a world says nothing.
+DEFAULT_STEP_SIZE = 0.001
+DEFAULT_GRAVITY = (0.0, 0.0, -9.8)
+
+
+class SdfError(ValueError):
+    """A world or model that cannot be loaded; the message names the file and the cause."""
+
+
+@dataclass
+class ShapeSpec:
+    """One collision or visual: ``kind`` box | cylinder | sphere | plane | mesh."""
+
+    kind: str
+    pose: Pose6 = ZERO_POSE
+    size: Tuple[float, float, float] = (1.0, 1.0, 1.0)
+    radius: float = 0.0
+    length: float = 0.0
+    normal: Tuple[float, float, float] = (0.0, 0.0, 1.0)
+    filename: str = ""
+    scale: Tuple[float, float, float] = (1.0, 1.0, 1.0)
+    rgba: Optional[Tuple[float, float, float, float]] = None
+    friction: Optional[float] = None
+
+
+@dataclass
+class LinkSpec:
+    name: str
+    pose: Pose6 = ZERO_POSE
+    collisions: List[ShapeSpec] = field(default_factory=list)
+    visuals: List[ShapeSpec] = field(default_factory=list)
+    mass: float = 1.0
+    inertia: Tuple[float, float, float] = (1.0, 1.0, 1.0)  # ixx, iyy, izz (SDF defaults)
+    inertial_pose: Pose6 = ZERO_POSE
+
+
+@dataclass
+class ModelSpec:
+    name: str
+    static: bool = False
+    pose: Pose6 = ZERO_POSE
+    links: List[LinkSpec] = field(default_factory=list)
+    source: str = ""
+
+
+@dataclass
+class WorldSpec:
+    name: str = "default"
+    step_size: float = DEFAULT_STEP_SIZE
+    gravity: Tuple[float, float, float] = DEFAULT_GRAVITY
+    models: List[ModelSpec] = field(default_factory=list)
+    source: str = ""
+
+
+def model_search_path() -> List[str]:
+    """GAZEBO_MODEL_PATH's folders, then sim_bridge's own model library."""
+    paths = [p for p in os.environ.get("GAZEBO_MODEL_PATH", "").split(os.pathsep) if p]
+    return paths + [PACKAGE_MODELS]
+
+
+def resolve_model_uri(uri: str, source: str, search: Optional[Sequence[str]] = None) -> str:
+    """The model.sdf path of ``model://NAME`` (or of a file path / ``file://`` URI)."""
+    if uri.startswith("file://"):
+        uri = uri[len("file://"):]
+    if not uri.startswith("model://"):
+        path = uri if os.path.isabs(uri) else os.path.join(os.path.dirname(source), uri)
+        if os.path.isdir(path):
+            path = os.path.join(path, "model.sdf")
+        if not os.path.isfile(path):
+            raise SdfError(f"{source}: '{uri}' is not a file")
+        return path
+    name = uri[len("model://"):].strip("/")
+    folders = list(search if search is not None else model_search_path())
+    for folder in folders:
+        candidate = os.path.join(folder, name)
+        for file_name in _model_files(candidate):
+            return file_name
+    raise SdfError(f"{source}: cannot find '{uri}'; searched {', '.join(folders)} "
+                   "(add the folder holding it to GAZEBO_MODEL_PATH)")
+
+
+def _model_files(folder: str) -> List[str]:
+    """The SDF of a model folder: model.config's <sdf>, else model.sdf."""
+    config = os.path.join(folder, "model.config")
+    if os.path.isfile(config):
+        try:
+            sdf = ET.parse(config).getroot().find("sdf")
+        except ET.ParseError:
+            sdf = None
+        if sdf is not None and sdf.text and os.path.isfile(os.path.join(folder, sdf.text.strip())):
+            return [os.path.join(folder, sdf.text.strip())]
+    path = os.path.join(folder, "model.sdf")
+    return [path] if os.path.isfile(path) else []
+
+
+def _numbers(text: Optional[str], count: int, what: str, source: str) -> Tuple[float, ...]:
+    parts = (text or "").split()
+    try:
+        values = tuple(float(p) for p in parts)
+    except ValueError:
+        raise SdfError(f"{source}: {what} '{text}' is not {count} numbers") from None
+    if len(values) != count:
+        raise SdfError(f"{source}: {what} '{text}' is not {count} numbers")
+    return values
+
+
+def _child_number(element: ET.Element, tag: str, default: float, what: str, source: str) -> float:
+    child = element.find(tag)
+    if child is None:
+        return default
+    return _numbers(child.text, 1, f"{what} <{tag}>", source)[0]
+
+
+def _pose(element: ET.Element, what: str, source: str) -> Pose6:
+    pose = element.find("pose")
+    if pose is None or not (pose.text or "").strip():
+        return ZERO_POSE
+    return _numbers(pose.text, 6, f"{what} <pose>", source)  # type: ignore[return-value]
+
+
+def _material(visual: ET.Element) -> Optional[Tuple[float, float, float, float]]:
+    material = visual.find("material")
+    if material is None:
+        return None
+    script_name = material.find("script/name")
+    if script_name is not None and script_name.text:
+        colour = gazebo_colour(script_name.text)
+        if colour is not None:
+            return colour
+    for tag in ("diffuse", "ambient"):
+        colour = material.find(tag)
+        if colour is not None and colour.text:
+            values = [float(v) for v in colour.text.split()]
+            if len(values) == 4:
+                return tuple(values)  # type: ignore[return-value]
+    return None
+
+
+def _shape(element: ET.Element, what: str, source: str, model_dir: str) -> ShapeSpec:
+    geometry = element.find("geometry")
+    if geometry is None or len(geometry) == 0:
+        raise SdfError(f"{source}: {what} has no <geometry>")
+    shape = geometry[0]
+    pose = _pose(element, what, source)
+    kind = shape.tag
+    if kind == "box":
+        size = _numbers(shape.findtext("size"), 3, f"{what} box <size>", source)
+        spec = ShapeSpec("box", pose, size=size)  # type: ignore[arg-type]
+    elif kind == "cylinder":
+        spec = ShapeSpec("cylinder", pose,
+                         radius=_child_number(shape, "radius", 0.5, what, source),
+                         length=_child_number(shape, "length", 1.0, what, source))
+    elif kind == "sphere":
+        spec = ShapeSpec("sphere", pose, radius=_child_number(shape, "radius", 0.5, what, source))
+    elif kind == "plane":
+        normal = _numbers(shape.findtext("normal") or "0 0 1", 3, f"{what} plane <normal>", source)
+        size = _numbers(shape.findtext("size") or "100 100", 2, f"{what} plane <size>", source)
+        spec = ShapeSpec("plane", pose, normal=normal,  # type: ignore[arg-type]
+                         size=(size[0], size[1], 0.0))
+    elif kind == "mesh":
+        uri = (shape.findtext("uri") or "").strip()
+        spec = ShapeSpec("mesh", pose, filename=_mesh_path(uri, what, source, model_dir),
+                         scale=_numbers(shape.findtext("scale") or "1 1 1", 3,  # type: ignore[arg-type]
+                                        f"{what} mesh <scale>", source))
+    else:
+        raise SdfError(f"{source}: {what} has geometry <{kind}>; sim_bridge reads box, "
+                       "cylinder, sphere, plane and mesh")
+    mu = element.find("surface/friction/ode/mu")
+    if mu is not None and mu.text:
+        spec.friction = float(mu.text)
+    return spec
+
+
+def _mesh_path(uri: str, what: str, source: str, model_dir: str) -> str:
+    if uri.startswith("model://"):
+        name, _, rest = uri[len("model://"):].partition("/")
+        for folder in model_search_path():
+            candidate = os.path.join(folder, name, rest)
+            if os.path.isfile(candidate):
+                return candidate
+        raise SdfError(f"{source}: {what} mesh '{uri}' not found in {model_search_path()}")
+    path = uri[len("file://"):] if uri.startswith("file://") else uri
+    if not os.path.isabs(path):
+        path = os.path.join(model_dir, path)
+    if not os.path.isfile(path):
+        raise SdfError(f"{source}: {what} mesh '{uri}' is not a file")
+    if not path.lower().endswith((".obj", ".stl")):
+        raise SdfError(f"{source}: {what} mesh '{uri}': sim_bridge reads OBJ and STL meshes")
+    return path
+
+
+def _link(element: ET.Element, model: str, source: str, model_dir: str) -> LinkSpec:
+    name = element.get("name", "link")
+    what = f"model '{model}' link '{name}'"
+    link = LinkSpec(name, _pose(element, what, source))
+    for index, collision in enumerate(element.findall("collision")):
+        link.collisions.append(_shape(collision, f"{what} collision {collision.get('name', index)}",
+                                      source, model_dir))
+    for index, visual in enumerate(element.findall("visual")):
+        shape = _shape(visual, f"{what} visual {visual.get('name', index)}", source, model_dir)
+        shape.rgba = _material(visual)
+        link.visuals.append(shape)
+    inertial = element.find("inertial")
+    if inertial is not None:
+        link.mass = _child_number(inertial, "mass", 1.0, f"{what} inertial", source)
+        link.inertial_pose = _pose(inertial, f"{what} inertial", source)
+        tensor = inertial.find("inertia")
+        if tensor is not None:
+            link.inertia = tuple(_child_number(tensor, tag, 1.0, f"{what} inertia", source)
+                                 for tag in ("ixx", "iyy", "izz"))  # type: ignore[assignment]
+    return link
+
+
+def _model(element: ET.Element, source: str, model_dir: str) -> ModelSpec:
+    name = element.get("name")
+    if not name:
+        raise SdfError(f"{source}: a <model> has no name")
+    static = (element.findtext("static") or "false").strip().lower() in ("1", "true")
+    model = ModelSpec(name, static, _pose(element, f"model '{name}'", source), source=source)
+    for link in element.findall("link"):
+        model.links.append(_link(link, name, source, model_dir))
+    for nested in element.findall("include"):
+        inner = _include(nested, source)
+        model.links.extend(_offset_links(inner))
+    if element.find("joint") is not None and not static:
+        raise SdfError(f"{source}: model '{name}' has joints; sim_bridge loads jointed robots "
+                       "from URDF (spawn_model -urdf), SDF models must be single bodies")
+    return model
+
+
+def _offset_links(model: ModelSpec) -> List[LinkSpec]:
+    from sim_bridge.poses import compose6
+    return [LinkSpec(l.name, compose6(model.pose, l.pose), l.collisions, l.visuals, l.mass,
+                     l.inertia, l.inertial_pose) for l in model.links]
+
+
+def load_model_file(path: str) -> ModelSpec:
+    """The first model of an SDF file (a model.sdf)."""
+    root = _parse(path)
+    element = root if root.tag == "model" else root.find("model")
+    if element is None:
+        raise SdfError(f"{path}: no <model> in it")
+    return _model(element, path, os.path.dirname(path))
+
+
+def parse_model(text: str, source: str = "<sdf>") -> ModelSpec:
+    """A model from SDF text (spawn_sdf_model's model_xml)."""
+    try:
+        root = ET.fromstring(text)
+    except ET.ParseError as error:
+        raise SdfError(f"{source}: not well-formed XML: {error}") from None
+    element = root if root.tag == "model" else root.find("model")
+    if element is None:
+        raise SdfError(f"{source}: no <model> in it")
+    return _model(element, source, os.getcwd())
+
+
+def _include(element: ET.Element, source: str) -> ModelSpec:
+    uri = (element.findtext("uri") or "").strip()
+    if not uri:
+        raise SdfError(f"{source}: an <include> has no <uri>")
+    model = load_model_file(resolve_model_uri(uri, source))
+    if element.find("name") is not None:
+        model.name = element.findtext("name").strip()
+    if element.find("pose") is not None:
+        model.pose = _pose(element, f"<include> of {uri}", source)
+    if element.find("static") is not None:
+        model.static = element.findtext("static").strip().lower() in ("1", "true")
+    return model
+
+
+def _parse(path: str) -> ET.Element:
+    try:
+        return ET.parse(path).getroot()
+    except ET.ParseError as error:
+        raise SdfError(f"{path}: not well-formed XML: {error}") from None
+    except OSError as error:
+        raise SdfError(f"{path}: cannot be read: {error.strerror}") from None
+
+
+def load_world(path: str) -> WorldSpec:
+    """Reads a .world file."""
+    root = _parse(path)
+    world = root.find("world") if root.tag == "sdf" else root
+    if world is None or world.tag != "world":
+        raise SdfError(f"{path}: no <world> in it")
+    spec = WorldSpec(world.get("name", "default"), source=path)
+    physics = world.find("physics")
+    if physics is not None:
+        spec.step_size = _child_number(physics, "max_step_size", DEFAULT_STEP_SIZE,
+                                       "<physics>", path)
+        if spec.step_size <= 0:
+            raise SdfError(f"{path}: <physics> <max_step_size> must be positive")
+    if world.find("gravity") is not None:
+        spec.gravity = _numbers(world.findtext("gravity"), 3, "<gravity>", path)  # type: ignore
+    names = set()
+    for element in world:
+        if element.tag == "include":
+            model = _include(element, path)
+        elif element.tag == "model":
+            model = _model(element, path, os.path.dirname(path))
+        else:
+            continue
+        if model.name in names:
+            raise SdfError(f"{path}: two models are named '{model.name}'")
+        names.add(model.name)
+        spec.models.append(model)
+    return spec

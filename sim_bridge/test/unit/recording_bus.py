@@ -1,0 +1,47 @@
+"""A Bus for tests: records what plugins publish, and lets a test call their subscribers."""
+from sim_bridge.plugins.base import Bus
+
+
+class _Handle:
+    def __init__(self, bus, topic):
+        self.bus, self.topic = bus, topic
+
+    def publish(self, message):
+        self.bus.published.setdefault(self.topic, []).append(message)
+
+    def unregister(self):
+        self.bus.closed.append(self.topic)
+
+
+class RecordingBus(Bus):
+    def __init__(self, params=None):
+        self.published = {}
+        self.subscriptions = {}
+        self.warnings = []
+        self.closed = []
+        self.params = params or {}
+
+    def publisher(self, topic, msg_class, queue_size=10, latch=False):
+        return _Handle(self, topic)
+
+    def subscriber(self, topic, msg_class, callback):
+        self.subscriptions[topic] = callback
+        return _Handle(self, topic)
+
+    def send_transforms(self, transforms):
+        self.published.setdefault("/tf", []).extend(transforms)
+
+    def info(self, text):
+        pass
+
+    def warn(self, text):
+        self.warnings.append(text)
+
+    def warn_throttled(self, key, period, text):
+        self.warnings.append(text)
+
+    def get_param(self, name, default=None):
+        return self.params.get(name, default)
+
+    def last(self, topic):
+        return self.published[topic][-1]
