@@ -244,7 +244,8 @@ def _model(element: ET.Element, source: str, model_dir: str) -> ModelSpec:
         model.links.append(_link(link, name, source, model_dir))
     for nested in element.findall("include"):
         inner = _include(nested, source)
-        model.links.extend(_offset_links(inner))
+        if inner is not None:
+            model.links.extend(_offset_links(inner))
     if element.find("joint") is not None and not static:
         raise SdfError(f"{source}: model '{name}' has joints; sim_bridge loads jointed robots "
                        "from URDF (spawn_model -urdf), SDF models must be single bodies")
@@ -257,11 +258,13 @@ def _offset_links(model: ModelSpec) -> List[LinkSpec]:
                      l.inertia, l.inertial_pose) for l in model.links]
 
 
-def load_model_file(path: str) -> ModelSpec:
-    """The first model of an SDF file (a model.sdf)."""
+def load_model_file(path: str) -> Optional[ModelSpec]:
+    """The first model of an SDF file (a model.sdf); None for a light (model://sun)."""
     root = _parse(path)
     element = root if root.tag == "model" else root.find("model")
     if element is None:
+        if root.find("light") is not None or root.tag == "light":
+            return None
         raise SdfError(f"{path}: no <model> in it")
     return _model(element, path, os.path.dirname(path))
 
@@ -278,11 +281,13 @@ def parse_model(text: str, source: str = "<sdf>") -> ModelSpec:
     return _model(element, source, os.getcwd())
 
 
-def _include(element: ET.Element, source: str) -> ModelSpec:
+def _include(element: ET.Element, source: str) -> Optional[ModelSpec]:
     uri = (element.findtext("uri") or "").strip()
     if not uri:
         raise SdfError(f"{source}: an <include> has no <uri>")
     model = load_model_file(resolve_model_uri(uri, source))
+    if model is None:
+        return None
     if element.find("name") is not None:
         model.name = element.findtext("name").strip()
     if element.find("pose") is not None:
@@ -323,6 +328,8 @@ def load_world(path: str) -> WorldSpec:
         elif element.tag == "model":
             model = _model(element, path, os.path.dirname(path))
         else:
+            continue
+        if model is None:  # a light: accepted, ignored
             continue
         if model.name in names:
             raise SdfError(f"{path}: two models are named '{model.name}'")

@@ -183,7 +183,8 @@ class World:
                 linkParentIndices=[0] * count, linkJointTypes=[pb.JOINT_FIXED] * count,
                 linkJointAxis=[[0, 0, 1]] * count, physicsClientId=self.client)
             for index, entry in enumerate(chunk):
-                friction = WORLD_FRICTION if entry[3] is None else entry[3]
+                # min(mu, 1): see WORLD_FRICTION
+                friction = WORLD_FRICTION if entry[3] is None else min(entry[3], WORLD_FRICTION)
                 pb.changeDynamics(body, index, lateralFriction=friction,
                                   physicsClientId=self.client)
             self._static_bodies.append(body)

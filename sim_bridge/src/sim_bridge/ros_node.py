@@ -1,0 +1,396 @@
+"""The ROS side of sim_bridge: gazebo_ros's node, topics and services around a World.
+
+The node is named ``gazebo`` by the launch files, so its services are gazebo_ros's:
+``/gazebo/spawn_urdf_model``, ``spawn_sdf_model``, ``delete_model``, ``get_model_state``,
+``set_model_state``, ``set_model_configuration``, ``get_world_properties``,
+``pause_physics``, ``unpause_physics``, ``reset_simulation``, ``reset_world``; topics
+``/clock`` and ``/gazebo/model_states``.
+
+Threads: the physics runs in the main thread, which alone touches pybullet. Service
+calls arrive on rospy's threads and are handed to it through a queue (so a request
+waits at most one step); subscriber callbacks only store the latest command.
+"""
+from __future__ import annotations
+
+import math
+import os
+import queue
+import subprocess
+import threading
+import time
+from dataclasses import dataclass
+from typing import Any, Callable, Dict
+
+import rospy
+from geometry_msgs.msg import Pose, Twist
+from rosgraph_msgs.msg import Clock
+from std_srvs.srv import Empty, EmptyResponse
+from tf2_msgs.msg import TFMessage
+
+from sim_bridge.msg import ModelStates
+from sim_bridge.plugins.base import Bus, PluginError
+from sim_bridge.poses import quaternion_matrix
+from sim_bridge.sdf_world import SdfError, load_world, parse_model
+from sim_bridge.srv import (DeleteModel, DeleteModelResponse, GetModelState,
+                            GetModelStateResponse, GetWorldProperties,
+                            GetWorldPropertiesResponse, SetModelConfiguration,
+                            SetModelConfigurationResponse, SetModelState, SetModelStateResponse,
+                            SpawnModel, SpawnModelResponse)
+from sim_bridge.world import SimError, World
+from urdf_tools.model import UrdfError
+
+import numpy as np
+import pybullet as pb
+
+# How long a service waits for the physics thread to take its request (wall seconds).
+REQUEST_TIMEOUT = 30.0
+# While paused, /clock is repeated this often (wall seconds) for late subscribers.
+PAUSED_CLOCK_PERIOD = 0.1
+
+
+@dataclass
+class Config:
+    """The node's private parameters, read once (defaults in config/sim_bridge.yaml)."""
+
+    world_name: str = ""
+    paused: bool = False
+    gui: bool = False
+    real_time_factor: float = 1.0
+    seed: int = 0
+    pub_clock_frequency: float = 250.0
+    model_states_frequency: float = 50.0
+    ray_threads: int = 0
+
+    @classmethod
+    def from_parameters(cls) -> "Config":
+        config = cls(**{name: rospy.get_param("~" + name, default)
+                        for name, default in cls().__dict__.items()})
+        if config.real_time_factor < 0 or not math.isfinite(config.real_time_factor):
+            raise ValueError(f"~real_time_factor must be 0 (as fast as possible) or positive, "
+                             f"not {config.real_time_factor}")
+        return config
+
+
+class RosBus(Bus):
+    """Bus for plugins, on rospy."""
+
+    def __init__(self):
+        self._tf = rospy.Publisher("/tf", TFMessage, queue_size=100)
+        self._throttle: Dict[str, float] = {}
+
+    def publisher(self, topic, msg_class, queue_size=10, latch=False):
+        return rospy.Publisher(topic, msg_class, queue_size=queue_size, latch=latch)
+
+    def subscriber(self, topic, msg_class, callback):
+        return rospy.Subscriber(topic, msg_class, callback, queue_size=1)
+
+    def send_transforms(self, transforms):
+        self._tf.publish(TFMessage(transforms=list(transforms)))
+
+    def info(self, text):
+        rospy.loginfo(text)
+
+    def warn(self, text):
+        rospy.logwarn(text)
+
+    def warn_throttled(self, key, period, text):
+        now = time.monotonic()
+        if now - self._throttle.get(key, -math.inf) >= period:
+            self._throttle[key] = now
+            rospy.logwarn(text)
+
+    def get_param(self, name, default=None):
+        return rospy.get_param(name, default)
+
+
+def display_available() -> bool:
+    display = os.environ.get("DISPLAY")
+    if not display:
+        return False
+    return subprocess.run(["xdpyinfo", "-display", display], capture_output=True,
+                          check=False).returncode == 0
+
+
+def _pose_parts(pose: Pose):
+    position = (pose.position.x, pose.position.y, pose.position.z)
+    orientation = (pose.orientation.x, pose.orientation.y, pose.orientation.z,
+                   pose.orientation.w)
+    if orientation == (0.0, 0.0, 0.0, 0.0):  # an unset quaternion means no rotation
+        orientation = (0.0, 0.0, 0.0, 1.0)
+    return position, orientation
+
+
+def _fill_pose(pose: Pose, position, orientation) -> None:
+    pose.position.x, pose.position.y, pose.position.z = (float(v) for v in position)
+    pose.orientation.x, pose.orientation.y, pose.orientation.z, pose.orientation.w = \
+        (float(v) for v in orientation)
+
+
+def _fill_twist(twist: Twist, linear, angular) -> None:
+    twist.linear.x, twist.linear.y, twist.linear.z = (float(v) for v in linear)
+    twist.angular.x, twist.angular.y, twist.angular.z = (float(v) for v in angular)
+
+
+class SimBridgeNode:
+    """gazebo_ros's interface over a World; ``run()`` is the physics loop."""
+
+    def __init__(self, config: Config, world: World):
+        self.config = config
+        self.world = world
+        self.requests: "queue.Queue" = queue.Queue()
+        self.clock_period_ns = int(1e9 / config.pub_clock_frequency) \
+            if config.pub_clock_frequency > 0 else 0
+        self.states_period_ns = int(1e9 / config.model_states_frequency) \
+            if config.model_states_frequency > 0 else 0
+        self._next_clock_ns = 0
+        self._next_states_ns = 0
+        self._pace_anchor = None
+
+    # --- set-up -------------------------------------------------------------------------
+    def advertise(self) -> None:
+        self.clock = rospy.Publisher("/clock", Clock, queue_size=10)
+        self.model_states = rospy.Publisher("~model_states", ModelStates, queue_size=1)
+        services = [
+            ("spawn_urdf_model", SpawnModel, self._spawn_urdf),
+            ("spawn_sdf_model", SpawnModel, self._spawn_sdf),
+            ("delete_model", DeleteModel, self._delete),
+            ("get_model_state", GetModelState, self._get_state),
+            ("set_model_state", SetModelState, self._set_state),
+            ("set_model_configuration", SetModelConfiguration, self._set_configuration),
+            ("get_world_properties", GetWorldProperties, self._world_properties),
+            ("pause_physics", Empty, self._pause),
+            ("unpause_physics", Empty, self._unpause),
+            ("reset_simulation", Empty, self._reset),
+            ("reset_world", Empty, self._reset),
+        ]
+        self.services = [rospy.Service("~" + name, kind, self._guarded(handler, kind))
+                         for name, kind, handler in services]
+
+    # --- requests: run in the physics thread ---------------------------------------------
+    def _in_physics_thread(self, work: Callable[[], Any]) -> Any:
+        done = threading.Event()
+        box: Dict[str, Any] = {}
+
+        def job():
+            try:
+                box["result"] = work()
+            except Exception as error:  # handed back to the service thread
+                box["error"] = error
+            finally:
+                done.set()
+
+        self.requests.put(job)
+        if not done.wait(REQUEST_TIMEOUT):
+            raise SimError(f"the simulator did not take the request within {REQUEST_TIMEOUT:.0f} s")
+        if "error" in box:
+            raise box["error"]
+        return box.get("result")
+
+    def _guarded(self, handler, kind):
+        """Runs ``handler`` in the physics thread; a user's error becomes success=false with
+        the cause, and the node goes on."""
+        response_class = kind._response_class
+
+        def serve(request):
+            try:
+                return self._in_physics_thread(lambda: handler(request))
+            except (SimError, UrdfError, SdfError, PluginError, ValueError) as error:
+                rospy.logerr(f"{kind._type.split('/')[-1]}: {error}")
+                response = response_class()
+                if hasattr(response, "success"):
+                    response.success = False
+                    response.status_message = str(error)
+                    return response
+                raise rospy.ServiceException(str(error))
+        return serve
+
+    def _relative_to(self, frame: str):
+        """(position, orientation) of a reference frame: '' / 'world' or a model's name."""
+        if frame in ("", "world", "map", "/world"):
+            return (0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)
+        return self.world.pose(frame.split("::")[0])
+
+    def _spawn(self, request, kind: str):
+        position, orientation = _pose_parts(request.initial_pose)
+        frame_position, frame_orientation = self._relative_to(request.reference_frame)
+        position, orientation = pb.multiplyTransforms(frame_position, frame_orientation,
+                                                      position, orientation)
+        if kind == "urdf":
+            self.world.spawn_urdf(request.model_name, request.model_xml, position, orientation,
+                                  request.robot_namespace, source=f"model '{request.model_name}'")
+        else:
+            spec = parse_model(request.model_xml, f"model '{request.model_name}'")
+            if request.model_name:
+                spec.name = request.model_name
+            self.world.add_sdf_model(spec, position, orientation, request.robot_namespace)
+        rospy.loginfo(f"spawned model '{request.model_name}'")
+        return SpawnModelResponse(True, f"SpawnModel: Successfully spawned entity "
+                                        f"'{request.model_name}'")
+
+    def _spawn_urdf(self, request):
+        return self._spawn(request, "urdf")
+
+    def _spawn_sdf(self, request):
+        return self._spawn(request, "sdf")
+
+    def _delete(self, request):
+        self.world.delete(request.model_name)
+        return DeleteModelResponse(True, f"DeleteModel: successfully deleted model "
+                                         f"'{request.model_name}'")
+
+    def _get_state(self, request):
+        position, orientation = self.world.pose(request.model_name)
+        linear, angular = self.world.twist(request.model_name)
+        if request.relative_entity_name not in ("", "world", "/world", "map"):
+            base_position, base_orientation = self._relative_to(request.relative_entity_name)
+            inverse = pb.invertTransform(base_position, base_orientation)
+            position, orientation = pb.multiplyTransforms(*inverse, position, orientation)
+            rotation = quaternion_matrix(base_orientation).T
+            linear, angular = rotation @ linear, rotation @ angular
+        response = GetModelStateResponse()
+        response.header.stamp = rospy.Time(nsecs=self.world.now_ns)
+        response.header.frame_id = request.relative_entity_name or "world"
+        _fill_pose(response.pose, position, orientation)
+        _fill_twist(response.twist, linear, angular)
+        response.success = True
+        response.status_message = "GetModelState: got properties"
+        return response
+
+    def _set_state(self, request):
+        state = request.model_state
+        position, orientation = _pose_parts(state.pose)
+        linear = (state.twist.linear.x, state.twist.linear.y, state.twist.linear.z)
+        angular = (state.twist.angular.x, state.twist.angular.y, state.twist.angular.z)
+        frame_position, frame_orientation = self._relative_to(state.reference_frame)
+        position, orientation = pb.multiplyTransforms(frame_position, frame_orientation,
+                                                      position, orientation)
+        rotation = quaternion_matrix(frame_orientation)
+        self.world.set_state(state.model_name, position, orientation,
+                             rotation @ np.asarray(linear), rotation @ np.asarray(angular))
+        return SetModelStateResponse(True, "SetModelState: set model state done")
+
+    def _set_configuration(self, request):
+        model = self.world.model(request.model_name)
+        if model.robot is None:
+            raise SimError(f"model '{request.model_name}' has no joints")
+        if len(request.joint_names) != len(request.joint_positions):
+            raise SimError("joint_names and joint_positions differ in length")
+        unknown = [j for j in request.joint_names if j not in model.robot.joint_index]
+        if unknown:
+            raise SimError(f"model '{request.model_name}' has no joint(s) {', '.join(unknown)}")
+        positions = dict(zip(request.joint_names, request.joint_positions))
+        model.robot.reset_joints(positions)
+        model.initial_joints.update(positions)
+        return SetModelConfigurationResponse(True, "SetModelConfiguration: success")
+
+    def _world_properties(self, _request):
+        return GetWorldPropertiesResponse(self.world.now, sorted(self.world.models),
+                                          self.world.gui, True, "GetWorldProperties: got properties")
+
+    def _pause(self, _request):
+        self.world.paused = True
+        return EmptyResponse()
+
+    def _unpause(self, _request):
+        self.world.paused = False
+        self._pace_anchor = None
+        return EmptyResponse()
+
+    def _reset(self, _request):
+        self.world.reset()
+        self._pace_anchor = None
+        return EmptyResponse()
+
+    # --- the loop -------------------------------------------------------------------------
+    def _serve_requests(self) -> None:
+        while True:
+            try:
+                job = self.requests.get_nowait()
+            except queue.Empty:
+                return
+            job()
+
+    def _publish_clock(self) -> None:
+        self.clock.publish(Clock(clock=rospy.Time(nsecs=self.world.now_ns)))
+
+    def _publish_model_states(self) -> None:
+        message = ModelStates()
+        for name in self.world.models:
+            position, orientation = self.world.pose(name)
+            linear, angular = self.world.twist(name)
+            pose, twist = Pose(), Twist()
+            _fill_pose(pose, position, orientation)
+            _fill_twist(twist, linear, angular)
+            message.name.append(name)
+            message.pose.append(pose)
+            message.twist.append(twist)
+        self.model_states.publish(message)
+
+    def _pace(self) -> None:
+        """Sleeps so that simulated time runs at real_time_factor times the wall clock."""
+        factor = self.config.real_time_factor
+        if factor <= 0:
+            return
+        wall = time.monotonic()
+        if self._pace_anchor is None:
+            self._pace_anchor = (wall, self.world.now_ns)
+        anchor_wall, anchor_ns = self._pace_anchor
+        ahead = anchor_wall + (self.world.now_ns - anchor_ns) / 1e9 / factor - wall
+        if ahead > 0.002:  # sleeping for less costs more than it is worth
+            time.sleep(ahead)
+        elif ahead < -0.5:  # far behind (a slow spell): do not race to catch up
+            self._pace_anchor = None
+
+    def run(self) -> None:
+        self._publish_clock()
+        last_paused_clock = 0.0
+        while not rospy.is_shutdown():
+            self._serve_requests()
+            if self.world.paused:
+                now = time.monotonic()
+                if now - last_paused_clock > PAUSED_CLOCK_PERIOD:
+                    self._publish_clock()
+                    last_paused_clock = now
+                time.sleep(0.002)
+                continue
+            self.world.step()
+            now_ns = self.world.now_ns
+            if now_ns >= self._next_clock_ns:
+                self._publish_clock()
+                self._next_clock_ns = now_ns + self.clock_period_ns
+            if now_ns >= self._next_states_ns:
+                self._publish_model_states()
+                self._next_states_ns = now_ns + self.states_period_ns
+            self._pace()
+
+
+def build_world(config: Config, bus: Bus) -> World:
+    gui = config.gui and display_available()
+    if config.gui and not gui:
+        rospy.logwarn("gui is true but no display answers (DISPLAY unset or unreachable); "
+                      "running headless")
+    world = World(bus, gui=gui, seed=config.seed, ray_threads=config.ray_threads)
+    if config.world_name:
+        world.load_world(load_world(config.world_name))
+        rospy.loginfo(f"loaded world {config.world_name}: {len(world.models)} models, "
+                      f"step {world.step_size * 1000:g} ms")
+    world.paused = config.paused
+    return world
+
+
+def main() -> None:
+    rospy.init_node("gazebo")
+    try:
+        config = Config.from_parameters()
+        world = build_world(config, RosBus())
+    except (ValueError, SdfError) as error:
+        rospy.logfatal(f"sim_bridge cannot start: {error}")
+        raise SystemExit(1) from None
+    node = SimBridgeNode(config, world)
+    node.advertise()
+    rospy.loginfo(f"sim_bridge ready (real_time_factor {config.real_time_factor:g}, "
+                  f"{'paused' if world.paused else 'running'})")
+    try:
+        node.run()
+    finally:
+        world.close()
