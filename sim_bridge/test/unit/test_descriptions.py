@@ -1,0 +1,69 @@
+"""The <gazebo> tag reader and the SDF reader, with model:// resolution."""
+import os
+
+import pytest
+
+from sim_bridge.gazebo_tags import read_gazebo_tags
+from sim_bridge.sdf_world import SdfError, load_world, parse_model, resolve_model_uri
+from urdf_tools.model import UrdfError, parse_urdf
+
+from conftest import DATA
+
+
+def test_gazebo_tags_surfaces_plugins_and_sensors(diff_bot_xml):
+    tags = read_gazebo_tags(parse_urdf(diff_bot_xml(), "diff_bot"))
+    assert tags.surfaces["front_caster"].mu1 == 0.0
+    assert tags.surfaces["base_link"].material == "Gazebo/Blue"
+    assert tags.surfaces["base_link"].mu1 == 1.0  # Gazebo's default
+    assert [p.filename for p in tags.plugins] == ["libgazebo_ros_diff_drive.so"]
+    assert tags.plugins[0].text("wheelDiameter") == "0.1"
+    (sensor,) = tags.sensors
+    assert (sensor.type, sensor.link, sensor.plugins[0].text("topicName")) == \
+        ("ray", "laser", "scan")
+
+
+def test_a_gazebo_reference_to_no_link_is_named():
+    text = "<robot name='r'><link name='a'/><gazebo reference='b'><mu1>1</mu1></gazebo></robot>"
+    with pytest.raises(UrdfError, match="reference='b'"):
+        read_gazebo_tags(parse_urdf(text, "r.urdf"))
+
+
+def test_the_test_world_loads_with_its_includes():
+    world = load_world(os.path.join(DATA, "test.world"))
+    assert [m.name for m in world.models] == ["ground_plane", "wall", "left_post"]
+    assert world.step_size == 0.001
+    wall = world.models[1]
+    assert wall.static and wall.pose == (2.25, 0.0, 0.5, 0.0, 0.0, 0.0)
+    assert wall.links[0].collisions[0].size == (0.2, 4.0, 1.0)
+    assert wall.links[0].visuals[0].rgba is not None  # Gazebo/Bricks
+
+
+def test_model_uri_resolution_prefers_gazebo_model_path(tmp_path, monkeypatch):
+    own = tmp_path / "ground_plane"
+    own.mkdir()
+    (own / "model.sdf").write_text("<sdf version='1.6'><model name='mine'/></sdf>")
+    monkeypatch.setenv("GAZEBO_MODEL_PATH", str(tmp_path))
+    assert resolve_model_uri("model://ground_plane", "w.world") == str(own / "model.sdf")
+    monkeypatch.setenv("GAZEBO_MODEL_PATH", "")
+    assert resolve_model_uri("model://ground_plane", "w.world").endswith(
+        os.path.join("sim_bridge", "models", "ground_plane", "model.sdf"))
+
+
+def test_an_unknown_model_uri_names_the_folders_searched(tmp_path, monkeypatch):
+    monkeypatch.setenv("GAZEBO_MODEL_PATH", str(tmp_path))
+    with pytest.raises(SdfError) as error:
+        resolve_model_uri("model://nowhere", "my.world")
+    message = str(error.value)
+    assert message.startswith("my.world: cannot find 'model://nowhere'")
+    assert str(tmp_path) in message and os.path.join("sim_bridge", "models") in message
+
+
+@pytest.mark.parametrize("text, fault", [
+    ("<sdf><model name='m'><link name='l'><collision name='c'><geometry><torus/></geometry>"
+     "</collision></link></model></sdf>", "geometry <torus>"),
+    ("<sdf><model name='m'><pose>1 2</pose></model></sdf>", "is not 6 numbers"),
+    ("<sdf><model name='m'>", "not well-formed"),
+])
+def test_broken_sdf_is_named(text, fault):
+    with pytest.raises(SdfError, match=fault):
+        parse_model(text, "m.sdf")

@@ -1,0 +1,135 @@
+"""The World on pybullet.DIRECT: spawning, poses in link frames, the plugins' physics."""
+import math
+
+import numpy as np
+import pytest
+from geometry_msgs.msg import Twist
+
+from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec
+from sim_bridge.world import SimError
+
+from conftest import run
+
+
+def command(bus, linear, angular=0.0, topic="/cmd_vel"):
+    message = Twist()
+    message.linear.x, message.angular.z = linear, angular
+    bus.subscriptions[topic](message)
+
+
+def test_a_robot_rests_on_its_wheels_where_spawned(world, diff_bot_xml):
+    world.spawn_urdf("bot", diff_bot_xml(), (1.0, 2.0, 0.0))
+    run(world, 1.0)
+    (x, y, z), orientation = world.pose("bot")
+    # base_footprint is at the wheels' contact plane: pybullet's margin is compensated
+    assert (x, y) == pytest.approx((1.0, 2.0), abs=1e-3)
+    assert abs(z) < 2e-4
+
+
+def test_the_pose_is_the_root_link_frame_not_the_centre_of_mass(world, diff_bot_xml):
+    model = world.spawn_urdf("bot", diff_bot_xml(), (0.0, 0.0, 0.5))
+    position, _ = world.pose("bot")
+    assert position == pytest.approx((0.0, 0.0, 0.5))
+    # the body's centre (base_link) is 0.08 m above base_footprint
+    base_link, _ = model.robot.link_pose("base_link")
+    assert base_link == pytest.approx((0.0, 0.0, 0.58))
+
+
+def test_driving_straight_matches_the_command(world, bus, diff_bot_xml):
+    world.spawn_urdf("bot", diff_bot_xml(), (0, 0, 0))
+    run(world, 0.5)
+    start, _ = world.pose("bot")
+    command(bus, 0.2)
+    run(world, 5.0)
+    end, _ = world.pose("bot")
+    assert end[0] - start[0] == pytest.approx(1.0, rel=0.02)
+    assert abs(end[1] - start[1]) < 0.005
+    odometry = bus.last("/odom")
+    assert odometry.header.frame_id == "odom" and odometry.child_frame_id == "base_footprint"
+    assert odometry.pose.pose.position.x == pytest.approx(end[0], abs=0.01)
+
+
+def test_encoder_odometry_keeps_the_sign_of_v(world, bus, diff_bot_xml):
+    world.spawn_urdf("bot", diff_bot_xml(odometry_source="encoder"), (0, 0, 0))
+    run(world, 0.5)
+    command(bus, -0.2)
+    run(world, 2.0)
+    odometry = bus.last("/odom")
+    assert odometry.twist.twist.linear.x == pytest.approx(-0.2, rel=0.05)
+    assert odometry.pose.pose.position.x == pytest.approx(world.pose("bot")[0][0], abs=0.01)
+
+
+def test_nan_commands_are_ignored_with_a_warning(world, bus, diff_bot_xml):
+    world.spawn_urdf("bot", diff_bot_xml(), (0, 0, 0))
+    command(bus, float("nan"))
+    run(world, 0.5)
+    assert abs(world.pose("bot")[0][0]) < 1e-3
+    assert any("must be finite" in warning for warning in bus.warnings)
+
+
+def test_laser_against_analytic_geometry(world, bus, diff_bot_xml):
+    # a wall across the x axis whose face is at x = 3.0; the laser sits at x = 0.15
+    world.add_sdf_model(ModelSpec("wall", True, pose=(3.1, 0, 0.5, 0, 0, 0), links=[
+        LinkSpec("link", collisions=[ShapeSpec("box", size=(0.2, 20.0, 1.0))])]))
+    world.spawn_urdf("bot", diff_bot_xml(), (0, 0, 0))
+    run(world, 0.5)
+    scan = bus.last("/scan")
+    angles = scan.angle_min + np.arange(len(scan.ranges)) * scan.angle_increment
+    ranges = np.array(scan.ranges)
+    # a ray at angle a meets the plane x = 3.0 after (3.0 - 0.15) / cos(a)
+    expected = np.where(np.cos(angles) > (3.0 - 0.15) / 10.0, (3.0 - 0.15) / np.cos(angles),
+                        math.inf)
+    finite = np.isfinite(expected) & (np.abs(angles) < 1.2)
+    np.testing.assert_allclose(ranges[finite], expected[finite], atol=0.01)
+    assert math.isinf(ranges[0]) and math.isinf(ranges[-1])  # along the wall: nothing
+
+
+def test_laser_noise_is_seeded(bus, diff_bot_xml):
+    from sim_bridge.world import World
+    from conftest import RecordingBus
+    readings = []
+    for _ in range(2):
+        recording = RecordingBus()
+        simulated = World(recording, seed=7, ray_threads=1)
+        simulated.add_sdf_model(ModelSpec("wall", True, pose=(2.0, 0, 0.5, 0, 0, 0), links=[
+            LinkSpec("link", collisions=[ShapeSpec("box", size=(0.2, 20.0, 1.0))])]))
+        simulated.spawn_urdf("bot", diff_bot_xml(laser_noise="0.01"), (0, 0, 0.0))
+        run(simulated, 0.2)
+        readings.append(recording.last("/scan").ranges)
+        simulated.close()
+    assert readings[0] == readings[1]
+
+
+def test_requests_that_cannot_be_done_name_the_cause(world, diff_bot_xml):
+    world.spawn_urdf("bot", diff_bot_xml(), (0, 0, 0))
+    with pytest.raises(SimError, match="exists already"):
+        world.spawn_urdf("bot", diff_bot_xml(), (0, 0, 0))
+    with pytest.raises(SimError, match="no model named 'ghost'"):
+        world.delete("ghost")
+    with pytest.raises(SimError, match="not finite"):
+        world.set_state("bot", (float("nan"), 0, 0), (0, 0, 0, 1))
+    with pytest.raises(SimError, match="no direction"):
+        world.set_state("bot", (0, 0, 0), (0, 0, 0, 0))
+
+
+def test_reset_puts_models_back_and_time_goes_on(world, bus, diff_bot_xml):
+    world.spawn_urdf("bot", diff_bot_xml(), (0, 0, 0))
+    command(bus, 0.3)
+    run(world, 1.0)
+    before = world.now_ns
+    world.reset()
+    assert world.pose("bot")[0][0] == pytest.approx(0.0, abs=1e-9)
+    assert world.now_ns == before
+    run(world, 0.5)  # the reset dropped the command: it stays
+    assert abs(world.pose("bot")[0][0]) < 2e-3
+
+
+def test_static_scenery_beyond_pybullets_caps_is_all_there(world):
+    # pybullet keeps 127 links of a body; the world splits scenery into several bodies
+    for index in range(150):
+        world.add_sdf_model(ModelSpec(f"box{index}", True, pose=(index * 1.0, 5.0, 0.5, 0, 0, 0),
+                                      links=[LinkSpec("l", collisions=[ShapeSpec("box")])]))
+    starts = np.array([[i * 1.0, 5.0, 3.0] for i in range(150)])
+    ends = starts - [0, 0, 5.0]
+    hits = world.cast_rays(starts, ends)
+    assert all(hit[0] >= 0 for hit in hits)
