@@ -6,12 +6,11 @@ import pytest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from recording_bus import RecordingBus  # noqa: E402
+from world_fixtures import DATA  # noqa: E402
 
 from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec  # noqa: E402
 from sim_bridge.world import World  # noqa: E402
 from urdf_tools.xacro_loader import expand  # noqa: E402
-
-DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data")
 
 
 @pytest.fixture
@@ -33,8 +32,3 @@ def diff_bot_xml():
     def make(**arguments):
         return expand(os.path.join(DATA, "diff_bot.urdf.xacro"), arguments)
     return make
-
-
-def run(world, seconds):
-    for _ in range(int(round(seconds / world.step_size))):
-        world.step()

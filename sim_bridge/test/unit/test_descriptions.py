@@ -7,7 +7,7 @@ from sim_bridge.gazebo_tags import read_gazebo_tags
 from sim_bridge.sdf_world import SdfError, load_world, parse_model, resolve_model_uri
 from urdf_tools.model import UrdfError, parse_urdf
 
-from conftest import DATA
+from world_fixtures import DATA
 
 
 def test_gazebo_tags_surfaces_plugins_and_sensors(diff_bot_xml):

@@ -8,7 +8,7 @@ from geometry_msgs.msg import Twist
 from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec
 from sim_bridge.world import SimError
 
-from conftest import run
+from world_fixtures import run
 
 
 def command(bus, linear, angular=0.0, topic="/cmd_vel"):
@@ -86,7 +86,7 @@ def test_laser_against_analytic_geometry(world, bus, diff_bot_xml):
 
 def test_laser_noise_is_seeded(bus, diff_bot_xml):
     from sim_bridge.world import World
-    from conftest import RecordingBus
+    from recording_bus import RecordingBus
     readings = []
     for _ in range(2):
         recording = RecordingBus()
