@@ -3,8 +3,9 @@
 #   make          set up and build
 #   make demo     set up, then run the main demo (headless: prints a screenshot's path)
 #   make test     set up, then run every test tier; ends with "N passed, N failed"
+#   make bench    set up, then measure sim_bridge's speed and memory (prints a table)
 #   make lint     catkin_lint -W2 on every package
-.PHONY: all setup demo test lint clean
+.PHONY: all setup demo test bench lint clean
 
 # Whatever python3 pyenv or conda put first, the workspace runs on the system interpreter.
 SHELL := /bin/bash
@@ -21,8 +22,11 @@ demo: setup
 test: setup
 	@$(RUN) python3 tools/run_tests.py
 
+bench: setup
+	@$(RUN) python3 tools/bench.py
+
 lint: setup
 	@$(RUN) catkin_lint -W2 --strict .
 
 clean:
-	rm -rf .ws test_results
+	rm -rf .ws test_results bench_results

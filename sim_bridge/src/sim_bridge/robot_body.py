@@ -126,7 +126,7 @@ class RobotBody:
         inertial = pb.getDynamicsInfo(self.id, -1, physicsClientId=client)
         # root link frame expressed in the base's centre-of-mass frame
         self._com_to_link = pb.invertTransform(inertial[3], inertial[4])
-        self._weightless: List[Tuple[int, float]] = []
+        self.weightless_links: List[Tuple[int, float]] = []
         self._apply_joint_settings()
         self._apply_surfaces(tags, warn)
 
@@ -167,7 +167,7 @@ class RobotBody:
                         self.set_colour(index, colour)
                 if not surface.gravity:
                     mass = pb.getDynamicsInfo(self.id, index, physicsClientId=self.client)[0]
-                    self._weightless.append((index, mass))
+                    self.weightless_links.append((index, mass))
             pb.changeDynamics(self.id, index, physicsClientId=self.client, **settings)
 
     def set_colour(self, link_index: int, rgba: Sequence[float]) -> None:
@@ -177,7 +177,7 @@ class RobotBody:
     def apply_weightlessness(self, gravity: Sequence[float]) -> None:
         """Cancels gravity on links whose ``<gravity>`` is false (pybullet has no per-link
         switch): an opposite force at their centre of mass, each step."""
-        for index, mass in self._weightless:
+        for index, mass in self.weightless_links:
             com = (pb.getBasePositionAndOrientation(self.id, physicsClientId=self.client)[0]
                    if index == -1 else
                    pb.getLinkState(self.id, index, physicsClientId=self.client)[0])

@@ -5,10 +5,9 @@ plugins), steps the physics with a fixed step, keeps simulated time as an intege
 of nanoseconds (monotonic, also across resets), and answers Gazebo's questions: spawn,
 delete, get and set a model's state, pause, reset.
 
-Static scenery is batched into a few multi-link bodies (at most ``STATIC_LINKS_PER_BODY``
-links each), one link per collision or visual shape: pybullet casts rays through one such
-body about three times faster than through one body per object, and it silently keeps
-only 16 shapes of a compound and 127 links of a body.
+Static scenery is one fixed rigid body per shape (``useMaximalCoordinates``): a fixed
+multi-link body would have all its links re-posed every step (four times the step cost
+in a 40-object hall). Lasers do not ask pybullet: see :mod:`sim_bridge.ray_caster`.
 """
 from __future__ import annotations
 
@@ -22,13 +21,14 @@ import pybullet as pb
 from sim_bridge.gazebo_tags import GazeboTags, read_gazebo_tags
 from sim_bridge.plugins import create_plugins
 from sim_bridge.plugins.base import Bus, Plugin, PluginContext
-from sim_bridge.poses import (compose6, normalized, pose6_to_position_quaternion,
-                              quaternion_from_rpy)
+from sim_bridge.poses import (compose6, normalized, pose6_matrix, pose6_to_position_quaternion,
+                              quaternion_from_rpy, quaternion_matrix)
+from sim_bridge.ray_caster import Primitive, ShapeSet, cast, primitive_for
 from sim_bridge.robot_body import RobotBody
 from sim_bridge.sdf_world import ModelSpec, ShapeSpec, WorldSpec
+from urdf_tools.kinematics import matrix_rpy, origin_transform
 from urdf_tools.model import UrdfError, parse_urdf
 
-STATIC_LINKS_PER_BODY = 100
 # pybullet multiplies the friction of the two surfaces in contact: world surfaces are 1.0
 # so that a contact gets the robot link's own mu (Gazebo takes the smaller of the two).
 WORLD_FRICTION = 1.0
@@ -54,14 +54,30 @@ class Model:
     tags: Optional[GazeboTags] = None
     plugins: List[Plugin] = field(default_factory=list)
     initial_joints: Dict[str, float] = field(default_factory=dict)
-    # for static models: where they are (they never move)
+    # for static models: where they are (they never move), their bodies and shapes
     position: Vec3 = (0.0, 0.0, 0.0)
     orientation: Quat = (0.0, 0.0, 0.0, 1.0)
+    static_bodies: List[int] = field(default_factory=list)
+    primitives: list = field(default_factory=list)
 
 
 def _finite(values: Sequence[float], what: str) -> None:
     if not all(math.isfinite(v) for v in values):
         raise SimError(f"{what} {tuple(values)} is not finite")
+
+
+def pose_matrix(position: Sequence[float], orientation: Sequence[float]) -> np.ndarray:
+    transform = np.eye(4)
+    transform[:3, :3] = quaternion_matrix(orientation)
+    transform[:3, 3] = position
+    return transform
+
+
+def _primitive(shape: ShapeSpec, transform: np.ndarray) -> Optional[Primitive]:
+    if shape.kind == "mesh":
+        return None
+    return primitive_for(shape.kind, transform, size=shape.size, radius=shape.radius,
+                         length=shape.length)
 
 
 class World:
@@ -75,7 +91,9 @@ class World:
         self.rng = np.random.default_rng(seed)
         self.ray_threads = ray_threads
         self.models: Dict[str, Model] = {}
-        self._static_bodies: List[int] = []
+        self._static_shapes: Optional[ShapeSet] = None
+        self._plugins: Optional[List[Plugin]] = None  # what step() calls; None: rebuild
+        self._weightless: List[RobotBody] = []
         self.now_ns = 0
         self.paused = False
         self.step_size = step_size
@@ -86,12 +104,13 @@ class World:
     def _configure_physics(self) -> None:
         pb.setGravity(*self.gravity, physicsClientId=self.client)
         pb.setTimeStep(self.step_size, physicsClientId=self.client)
+        self._step_ns = int(round(self.step_size * 1e9))
         pb.setPhysicsEngineParameter(deterministicOverlappingPairs=1,
                                      physicsClientId=self.client)
 
     @property
     def step_ns(self) -> int:
-        return int(round(self.step_size * 1e9))
+        return self._step_ns
 
     @property
     def now(self) -> float:
@@ -117,11 +136,14 @@ class World:
         model = Model(spec.name, "static" if spec.static else "body", pos, orn, namespace, spec,
                       position=pos, orientation=orn)
         if spec.static:
-            self.models[spec.name] = model
-            self._rebuild_static()
+            self._create_static_bodies(model)
         else:
             model.body = self._free_body(spec)
-            self.models[spec.name] = model
+            model.primitives = [
+                (pose6_matrix(link.pose) @ pose6_matrix(shape.pose), shape)
+                for link in spec.links for shape in link.collisions]
+        self.models[spec.name] = model
+        self._plugins = None
         return model
 
     def _shape_arguments(self, shape: ShapeSpec, collision: bool) -> dict:
@@ -147,47 +169,60 @@ class World:
             arguments["rgbaColor"] = list(shape.rgba or (0.7, 0.7, 0.7, 1.0))
         return arguments
 
-    def _make_shape(self, shape: ShapeSpec, collision: bool) -> int:
+    def _make_shape(self, shape: ShapeSpec, collision: bool, relative_to=None) -> int:
+        """A pybullet shape; ``relative_to`` = (link pose, body pose) places a visual on a
+        body that is not at the visual's own pose."""
+        arguments = self._shape_arguments(shape, collision)
+        if relative_to is not None:
+            link_pose, body_pose = relative_to
+            offset = np.linalg.inv(pose6_matrix(body_pose)) @ pose6_matrix(
+                compose6(link_pose, shape.pose))
+            arguments["visualFramePosition"] = offset[:3, 3].tolist()
+            arguments["visualFrameOrientation"] = list(
+                quaternion_from_rpy(*matrix_rpy(offset[:3, :3])))
         create = pb.createCollisionShape if collision else pb.createVisualShape
-        return create(physicsClientId=self.client, **self._shape_arguments(shape, collision))
+        return create(physicsClientId=self.client, **arguments)
 
-    def _rebuild_static(self) -> None:
-        """Rebuilds the static scenery's bodies from the static models' specs."""
-        for body in self._static_bodies:
-            pb.removeBody(body, physicsClientId=self.client)
-        self._static_bodies = []
-        entries: List[Tuple[int, int, Tuple[float, ...], Optional[float]]] = []
-        for model in self.models.values():
-            if model.kind != "static":
-                continue
-            for link in model.spec.links:
-                link_pose = compose6(model.spec.pose, link.pose)
-                for shape in link.collisions:
-                    pose = compose6(link_pose, shape.pose)
-                    entries.append((self._make_shape(shape, True), -1, pose, shape.friction))
-                for shape in link.visuals:
-                    pose = compose6(link_pose, shape.pose)
-                    entries.append((-1, self._make_shape(shape, False), pose, None))
-        for start in range(0, len(entries), STATIC_LINKS_PER_BODY):
-            chunk = entries[start:start + STATIC_LINKS_PER_BODY]
-            count = len(chunk)
-            body = pb.createMultiBody(
-                baseMass=0, baseCollisionShapeIndex=-1, baseVisualShapeIndex=-1,
-                linkMasses=[0] * count,
-                linkCollisionShapeIndices=[e[0] for e in chunk],
-                linkVisualShapeIndices=[e[1] for e in chunk],
-                linkPositions=[list(e[2][:3]) for e in chunk],
-                linkOrientations=[list(quaternion_from_rpy(*e[2][3:6])) for e in chunk],
-                linkInertialFramePositions=[[0, 0, 0]] * count,
-                linkInertialFrameOrientations=[[0, 0, 0, 1]] * count,
-                linkParentIndices=[0] * count, linkJointTypes=[pb.JOINT_FIXED] * count,
-                linkJointAxis=[[0, 0, 1]] * count, physicsClientId=self.client)
-            for index, entry in enumerate(chunk):
+    def _create_static_bodies(self, model: Model) -> None:
+        """One fixed rigid body per collision shape and one per visual: pybullet does not
+        touch them between steps (a multi-link body's links are re-posed every step)."""
+        model.static_bodies = []
+        model.primitives = []
+        for link in model.spec.links:
+            link_pose = compose6(model.spec.pose, link.pose)
+            visuals = list(link.visuals)
+            for shape in link.collisions:
+                pose = compose6(link_pose, shape.pose)
+                # a link's only visual rides on its first collision body: half the bodies
+                visual = -1
+                if len(link.visuals) == 1 and visuals:
+                    visual = self._make_shape(visuals.pop(), False,
+                                              relative_to=(link_pose, pose))
+                body = self._fixed_body(self._make_shape(shape, True), visual, pose)
                 # min(mu, 1): see WORLD_FRICTION
-                friction = WORLD_FRICTION if entry[3] is None else min(entry[3], WORLD_FRICTION)
-                pb.changeDynamics(body, index, lateralFriction=friction,
+                friction = WORLD_FRICTION if shape.friction is None \
+                    else min(shape.friction, WORLD_FRICTION)
+                pb.changeDynamics(body, -1, lateralFriction=friction, physicsClientId=self.client)
+                model.static_bodies.append(body)
+                model.primitives.append(_primitive(shape, pose6_matrix(pose)))
+            for shape in visuals:
+                pose = compose6(link_pose, shape.pose)
+                model.static_bodies.append(self._fixed_body(-1, self._make_shape(shape, False),
+                                                            pose))
+        self._static_shapes = None  # rebuilt on the next ray cast
+
+    def _fixed_body(self, collision: int, visual: int, pose: Sequence[float]) -> int:
+        position, orientation = pose6_to_position_quaternion(pose)
+        return pb.createMultiBody(baseMass=0, baseCollisionShapeIndex=collision,
+                                  baseVisualShapeIndex=visual, basePosition=list(position),
+                                  baseOrientation=list(orientation), useMaximalCoordinates=True,
                                   physicsClientId=self.client)
-            self._static_bodies.append(body)
+
+    def _remove_static_bodies(self, model: Model) -> None:
+        for body in model.static_bodies:
+            pb.removeBody(body, physicsClientId=self.client)
+        model.static_bodies = []
+        self._static_shapes = None
 
     def _free_body(self, spec: ModelSpec) -> int:
         if len(spec.links) != 1:
@@ -275,6 +310,7 @@ class World:
             robot.remove()
             raise
         self.models[name] = model
+        self._plugins = None
         return model
 
     # --- requests ------------------------------------------------------------------------
@@ -290,8 +326,9 @@ class World:
         for plugin in model.plugins:
             plugin.close()
         del self.models[name]
+        self._plugins = None
         if model.kind == "static":
-            self._rebuild_static()
+            self._remove_static_bodies(model)
         elif model.robot is not None:
             model.robot.remove()
         elif model.body is not None:
@@ -328,7 +365,8 @@ class World:
             model.position, model.orientation = tuple(position), orientation
             roll_pitch_yaw = pb.getEulerFromQuaternion(list(orientation))
             model.spec.pose = (*position, *roll_pitch_yaw)
-            self._rebuild_static()
+            self._remove_static_bodies(model)
+            self._create_static_bodies(model)
         elif model.robot is not None:
             model.robot.set_base_state(position, orientation, linear, angular)
         else:
@@ -354,21 +392,74 @@ class World:
         """One physics step; False (and nothing happens) while paused."""
         if self.paused:
             return False
-        plugins = [p for m in self.models.values() for p in m.plugins]
-        for plugin in plugins:
+        if self._plugins is None:  # the models changed since the last step
+            self._plugins = [p for m in self.models.values() for p in m.plugins]
+            self._weightless = [m.robot for m in self.models.values()
+                                if m.robot is not None and m.robot.weightless_links]
+        for plugin in self._plugins:
             plugin.before_step(self.now_ns)
-        for model in self.models.values():
-            if model.robot is not None and model.robot._weightless:
-                model.robot.apply_weightlessness(self.gravity)
+        for robot in self._weightless:
+            robot.apply_weightlessness(self.gravity)
         pb.stepSimulation(physicsClientId=self.client)
-        self.now_ns += self.step_ns
-        for plugin in plugins:
+        self.now_ns += self._step_ns
+        for plugin in self._plugins:
             plugin.after_step(self.now_ns)
         return True
 
-    def cast_rays(self, starts: np.ndarray, ends: np.ndarray) -> List[tuple]:
-        return pb.rayTestBatch(starts.tolist(), ends.tolist(), numThreads=self.ray_threads,
-                               physicsClientId=self.client)
+    # --- ray casting (lasers) -------------------------------------------------------------
+    def cast_rays(self, origin: Sequence[float], directions: np.ndarray, near: float,
+                  far: float) -> np.ndarray:
+        """Distances from ``origin`` along unit ``directions`` to the first surface between
+        ``near`` and ``far`` (inf where there is none). Analytic against the scene's
+        primitive shapes; through pybullet when a mesh is in the scene."""
+        origin = np.asarray(origin, dtype=float)
+        starts = origin + directions * near
+        if self._scene_has_meshes():
+            ends = origin + directions * far
+            results = pb.rayTestBatch(starts.tolist(), ends.tolist(),
+                                      numThreads=self.ray_threads, physicsClientId=self.client)
+            fractions = np.array([r[2] if r[0] >= 0 else np.inf for r in results])
+            return near + fractions * (far - near)
+        if self._static_shapes is None:
+            self._static_shapes = ShapeSet([p for m in self.models.values()
+                                            if m.kind == "static" for p in m.primitives
+                                            if p is not None])
+        distances = near + cast([self._static_shapes, ShapeSet(self._moving_primitives())],
+                                starts, directions)
+        return np.where(distances <= far, distances, np.inf)
+
+    def _scene_has_meshes(self) -> bool:
+        for model in self.models.values():
+            if model.robot is not None:
+                if any(s.geometry.kind == "mesh" for link in model.robot.model.links.values()
+                       for s in link.collisions):
+                    return True
+            elif model.spec is not None and any(
+                    s.kind == "mesh" for link in model.spec.links for s in link.collisions):
+                return True
+        return False
+
+    def _moving_primitives(self) -> List[Primitive]:
+        primitives: List[Primitive] = []
+        for model in self.models.values():
+            if model.kind == "static":
+                continue
+            if model.robot is not None:
+                for link_name, link in model.robot.model.links.items():
+                    if not link.collisions:
+                        continue
+                    link_transform = pose_matrix(*model.robot.link_pose(link_name))
+                    for shape in link.collisions:
+                        g = shape.geometry
+                        primitives.append(primitive_for(
+                            g.kind, link_transform @ origin_transform(shape.origin),
+                            size=g.size, radius=g.radius, length=g.length))
+            elif model.body is not None:
+                body_transform = pose_matrix(*pb.getBasePositionAndOrientation(
+                    model.body, physicsClientId=self.client))
+                for local, shape in model.primitives:
+                    primitives.append(_primitive(shape, body_transform @ local))
+        return primitives
 
     def close(self) -> None:
         for name in list(self.models):

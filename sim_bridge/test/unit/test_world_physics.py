@@ -2,6 +2,7 @@
 import math
 
 import numpy as np
+import pybullet as pb
 import pytest
 from geometry_msgs.msg import Twist
 
@@ -124,12 +125,14 @@ def test_reset_puts_models_back_and_time_goes_on(world, bus, diff_bot_xml):
     assert abs(world.pose("bot")[0][0]) < 2e-3
 
 
-def test_static_scenery_beyond_pybullets_caps_is_all_there(world):
-    # pybullet keeps 127 links of a body; the world splits scenery into several bodies
+def test_many_static_objects_are_all_solid_and_seen(world):
+    # more than pybullet keeps in a compound (16) or in one body's links (127)
     for index in range(150):
         world.add_sdf_model(ModelSpec(f"box{index}", True, pose=(index * 1.0, 5.0, 0.5, 0, 0, 0),
                                       links=[LinkSpec("l", collisions=[ShapeSpec("box")])]))
-    starts = np.array([[i * 1.0, 5.0, 3.0] for i in range(150)])
-    ends = starts - [0, 0, 5.0]
-    hits = world.cast_rays(starts, ends)
-    assert all(hit[0] >= 0 for hit in hits)
+    down = np.array([[0.0, 0.0, -1.0]])
+    for index in (0, 127, 149):
+        assert world.cast_rays((index * 1.0, 5.0, 3.0), down, 0.0, 10.0)[0] == \
+            pytest.approx(2.0)
+        assert pb.rayTest((index * 1.0, 5.0, 3.0), (index * 1.0, 5.0, -1.0),
+                          physicsClientId=world.client)[0][0] >= 0  # solid for physics too

@@ -57,8 +57,8 @@ class PluginContext:
     rng: np.random.Generator
     step_size: float
     gravity: Sequence[float] = (0.0, 0.0, -9.8)
-    # cast_rays(starts (N, 3), ends (N, 3)) -> pybullet.rayTestBatch's results
-    cast_rays: Optional[Callable[[np.ndarray, np.ndarray], list]] = None
+    # cast_rays(origin, unit directions (N, 3), near, far) -> distances (N,), inf: nothing
+    cast_rays: Optional[Callable[..., np.ndarray]] = None
 
 
 def resolve_topic(namespace: str, topic: str) -> str:

@@ -13,8 +13,6 @@ stamps are simulated time.
 """
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pybullet as pb
 from sensor_msgs.msg import LaserScan
@@ -86,12 +84,8 @@ class Laser(Plugin):
         """One scan's ranges (metres; +inf where nothing is within range)."""
         position, orientation = self.sensor_pose()
         world_directions = self.directions @ quaternion_matrix(orientation).T
-        origin = np.asarray(position)
-        starts = origin + world_directions * self.range_min
-        ends = origin + world_directions * self.range_max
-        results = self.context.cast_rays(starts, ends)
-        fractions = np.array([r[2] if r[0] >= 0 else math.inf for r in results])
-        ranges = self.range_min + fractions * (self.range_max - self.range_min)
+        ranges = self.context.cast_rays(position, world_directions, self.range_min,
+                                        self.range_max)
         hit = np.isfinite(ranges)
         if self.noise_stddev > 0 or self.noise_mean != 0:
             ranges[hit] += self.context.rng.normal(self.noise_mean, self.noise_stddev,
