@@ -136,3 +136,29 @@ def test_many_static_objects_are_all_solid_and_seen(world):
             pytest.approx(2.0)
         assert pb.rayTest((index * 1.0, 5.0, 3.0), (index * 1.0, 5.0, -1.0),
                           physicsClientId=world.client)[0][0] >= 0  # solid for physics too
+
+
+def test_the_model_library_loads_and_free_models_rest_where_placed(bus, tmp_path):
+    from sim_bridge.sdf_world import load_world
+    from sim_bridge.world import World
+    world_file = tmp_path / "library.world"
+    includes = "".join(
+        f"<include><uri>model://{name}</uri><name>{name}</name><pose>{x} 0 0 0 0 0</pose></include>"
+        for name, x in (("jersey_barrier", 0), ("cardboard_box", 3), ("construction_cone", 5)))
+    world_file.write_text(
+        "<sdf version='1.6'><world name='w'><include><uri>model://ground_plane</uri></include>"
+        "<include><uri>model://sun</uri></include><include><uri>model://asphalt_plane</uri>"
+        f"</include>{includes}</world></sdf>")
+    simulated = World(bus, ray_threads=1)
+    simulated.load_world(load_world(str(world_file)))
+    assert set(simulated.models) == {"ground_plane", "asphalt_plane", "jersey_barrier",
+                                     "cardboard_box", "construction_cone"}
+    run(simulated, 1.0)
+    for name, x in (("cardboard_box", 3.0), ("construction_cone", 5.0)):
+        (px, py, pz), _ = simulated.pose(name)
+        assert (px, py) == pytest.approx((x, 0.0), abs=0.01), name
+        assert 0.0 <= pz < 0.2, name  # resting on the asphalt, not sunk or thrown
+    # the barrier is solid to lasers: 4 m long across the x axis at y = 0
+    down = np.array([[0.0, 0.0, -1.0]])
+    assert simulated.cast_rays((1.5, 0.0, 2.0), down, 0.0, 5.0)[0] == pytest.approx(1.2, abs=0.01)
+    simulated.close()
