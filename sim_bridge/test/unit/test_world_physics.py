@@ -162,3 +162,28 @@ def test_the_model_library_loads_and_free_models_rest_where_placed(bus, tmp_path
     down = np.array([[0.0, 0.0, -1.0]])
     assert simulated.cast_rays((1.5, 0.0, 2.0), down, 0.0, 5.0)[0] == pytest.approx(1.2, abs=0.01)
     simulated.close()
+
+
+def test_skid_steer_drives_straight_and_turns_in_place(world, bus):
+    from urdf_tools.xacro_loader import expand
+    from world_fixtures import DATA
+    world.spawn_urdf("skid", expand(f"{DATA}/skid_bot.urdf.xacro"), (0, 0, 0))
+    run(world, 0.5)
+    command(bus, 0.3)
+    run(world, 3.0)
+    (x, y, _), _ = world.pose("skid")
+    assert x == pytest.approx(0.9, rel=0.1)
+    assert abs(y) < 0.03
+    command(bus, 0.0, 1.0)
+    run(world, 0.5)
+    start_position, start_orientation = world.pose("skid")
+    run(world, 1.0)
+    end_position, end_orientation = world.pose("skid")
+    from sim_bridge.poses import yaw_from_quaternion
+    turned = yaw_from_quaternion(end_orientation) - yaw_from_quaternion(start_orientation)
+    # counter-clockwise; slower than commanded, since the wheels slide sideways to turn
+    assert turned > 0.2
+    assert math.dist(start_position[:2], end_position[:2]) < 0.05  # in place
+    odometry = bus.last("/odom")
+    assert odometry.pose.covariance[0] == 0.0001 and odometry.pose.covariance[35] == 0.01
+    assert any(t.child_frame_id == "base_footprint" for t in bus.published["/tf"])

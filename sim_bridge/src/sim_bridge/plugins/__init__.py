@@ -12,9 +12,11 @@ from sim_bridge.gazebo_tags import GazeboTags
 from sim_bridge.plugins.base import Plugin, PluginContext, PluginError
 from sim_bridge.plugins.diff_drive import DiffDrive
 from sim_bridge.plugins.laser import Laser
+from sim_bridge.plugins.skid_steer import SkidSteer
 
 MODEL_PLUGINS = {
     "libgazebo_ros_diff_drive.so": DiffDrive,
+    "libgazebo_ros_skid_steer_drive.so": SkidSteer,
 }
 SENSOR_PLUGINS = {
     "libgazebo_ros_laser.so": (Laser, ("ray", "gpu_ray")),

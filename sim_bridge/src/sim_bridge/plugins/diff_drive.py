@@ -16,27 +16,24 @@ wheels at NaN.
 """
 from __future__ import annotations
 
-import math
-
 import pybullet as pb
-from geometry_msgs.msg import TransformStamped, Twist
-from nav_msgs.msg import Odometry
+from geometry_msgs.msg import TransformStamped
 from sensor_msgs.msg import JointState
 
 from sim_bridge.drive_kinematics import body_twist, integrate, limit_change, wheel_speeds
-from sim_bridge.plugins.base import Plugin, PluginError, Rate, stamp
-from sim_bridge.poses import quaternion_from_rpy, yaw_from_quaternion
+from sim_bridge.plugins.base import PluginError, Rate, stamp
+from sim_bridge.plugins.drive_base import DriveBase, covariance
+from sim_bridge.poses import quaternion_from_rpy
 
 # gazebo_ros's odometry covariance: x, y and yaw known well, z, roll, pitch not at all.
-POSE_COVARIANCE = [0.0] * 36
-for _index, _value in ((0, 1e-5), (7, 1e-5), (14, 1e12), (21, 1e12), (28, 1e12), (35, 1e-3)):
-    POSE_COVARIANCE[_index] = _value
-TWIST_COVARIANCE = list(POSE_COVARIANCE)
+POSE_COVARIANCE = covariance(1e-5, 1e-5, 1e-3)
+TWIST_COVARIANCE = covariance(1e-5, 1e-5, 1e-3)
 
 
-class DiffDrive(Plugin):
+class DiffDrive(DriveBase):
     def __init__(self, context, spec):
-        super().__init__(context, spec)
+        super().__init__(context, spec, spec.text("commandTopic", "cmd_vel"),
+                         spec.text("odometryTopic", "odom"))
         self.left_joint = self.joint("leftJoint", "left_joint")
         self.right_joint = self.joint("rightJoint", "right_joint")
         self.separation = self.number("wheelSeparation", 0.34)
@@ -46,8 +43,6 @@ class DiffDrive(Plugin):
                               "be positive")
         self.torque = self.number("wheelTorque", 5.0)
         self.acceleration = self.number("wheelAcceleration", 0.0)
-        self.odom_frame = self.param("odometryFrame", "odom")
-        self.base_frame = self.param("robotBaseFrame", "base_footprint")
         self.publish_tf = self.flag("publishTf", True)
         self.publish_odom_tf = self.flag("publishOdomTF", True) and self.publish_tf
         self.publish_wheel_tf = self.flag("publishWheelTF", False) and self.publish_tf
@@ -58,14 +53,9 @@ class DiffDrive(Plugin):
                               "world nor encoder")
         self.encoder = source in ("encoder", "0")
         self.rate = Rate(self.number("updateRate", 100.0))
-        bus = context.bus
-        self.command_topic = self.topic(self.param("commandTopic", "cmd_vel"))
-        self.odom_out = bus.publisher(self.topic(self.param("odometryTopic", "odom")), Odometry,
-                                      queue_size=1)
-        self.joints_out = (bus.publisher(self.topic("joint_states"), JointState, queue_size=1)
+        self.joints_out = (context.bus.publisher(self.topic("joint_states"), JointState,
+                                                 queue_size=1)
                            if self.publish_joint_state else None)
-        self._subscription = bus.subscriber(self.command_topic, Twist, self._on_command)
-        self.command = (0.0, 0.0)
         self.applied = (None, None)
         self.wheel_target = [0.0, 0.0]
         self._reset_odometry()
@@ -76,17 +66,6 @@ class DiffDrive(Plugin):
     def _reset_odometry(self) -> None:
         self.pose = (0.0, 0.0, 0.0)  # encoder odometry: x, y, yaw since spawn or reset
         self.encoder_twist = (0.0, 0.0)
-
-    # --- ROS side (called from rospy's threads: only stores) --------------------------
-    def _on_command(self, message: Twist) -> None:
-        linear, angular = message.linear.x, message.angular.z
-        if not (math.isfinite(linear) and math.isfinite(angular)):
-            self.context.bus.warn_throttled(
-                f"{self.command_topic}:nan", 5.0,
-                f"{self.command_topic}: ignoring a command with linear.x={linear}, "
-                f"angular.z={angular}; both must be finite numbers")
-            return
-        self.command = (linear, angular)
 
     # --- the step -------------------------------------------------------------------------
     def before_step(self, now_ns: int) -> None:
@@ -108,19 +87,11 @@ class DiffDrive(Plugin):
         if not self.rate.due(now_ns):
             return
         time = stamp(now_ns)
-        odometry = self._odometry(time)
+        odometry = self._odometry(now_ns)
         self.odom_out.publish(odometry)
         transforms = []
         if self.publish_odom_tf:
-            transform = TransformStamped()
-            transform.header.stamp = time
-            transform.header.frame_id = self.odom_frame
-            transform.child_frame_id = self.base_frame
-            transform.transform.translation.x = odometry.pose.pose.position.x
-            transform.transform.translation.y = odometry.pose.pose.position.y
-            transform.transform.translation.z = odometry.pose.pose.position.z
-            transform.transform.rotation = odometry.pose.pose.orientation
-            transforms.append(transform)
+            transforms.append(self.odometry_transform(odometry))
         if self.publish_wheel_tf:
             transforms.extend(self._wheel_transforms(time))
         if transforms:
@@ -146,34 +117,15 @@ class DiffDrive(Plugin):
         self.pose = integrate(*self.pose, linear, angular, dt)
         self.encoder_twist = (linear, angular)
 
-    def _odometry(self, time) -> Odometry:
-        message = Odometry()
-        message.header.stamp = time
-        message.header.frame_id = self.odom_frame
-        message.child_frame_id = self.base_frame
+    def _odometry(self, now_ns: int):
         if self.encoder:
             x, y, yaw = self.pose
-            position = (x, y, 0.0)
-            orientation = quaternion_from_rpy(0.0, 0.0, yaw)
             linear, angular = self.encoder_twist
-            twist = (linear, 0.0, angular)
-        else:
-            # Gazebo's "world" source: the true pose in the world, the twist in the body frame
-            position, orientation = self.context.robot.base_pose()
-            world_linear, world_angular = self.context.robot.base_twist()
-            yaw = yaw_from_quaternion(orientation)
-            forward = math.cos(yaw) * world_linear[0] + math.sin(yaw) * world_linear[1]
-            sideways = math.cos(yaw) * world_linear[1] - math.sin(yaw) * world_linear[0]
-            twist = (forward, sideways, world_angular[2])
-        pose = message.pose.pose
-        pose.position.x, pose.position.y, pose.position.z = position
-        pose.orientation.x, pose.orientation.y, pose.orientation.z, pose.orientation.w = \
-            orientation
-        message.twist.twist.linear.x, message.twist.twist.linear.y = twist[0], twist[1]
-        message.twist.twist.angular.z = twist[2]
-        message.pose.covariance = POSE_COVARIANCE
-        message.twist.covariance = TWIST_COVARIANCE
-        return message
+            return self.odometry_message(now_ns, (x, y, 0.0), quaternion_from_rpy(0.0, 0.0, yaw),
+                                         (linear, 0.0, angular), POSE_COVARIANCE,
+                                         TWIST_COVARIANCE)
+        return self.odometry_message(now_ns, *self.world_odometry(), POSE_COVARIANCE,
+                                     TWIST_COVARIANCE)
 
     def _wheel_transforms(self, time):
         robot = self.context.robot
@@ -196,14 +148,13 @@ class DiffDrive(Plugin):
         return transforms
 
     def reset(self, now_ns: int) -> None:
-        self.command = (0.0, 0.0)
+        super().reset(now_ns)
         self.wheel_target = [0.0, 0.0]
         self._reset_odometry()
         self._last_ns = None
         self.rate.reset(now_ns)
 
     def close(self) -> None:
-        self._subscription.unregister()
-        self.odom_out.unregister()
+        super().close()
         if self.joints_out is not None:
             self.joints_out.unregister()

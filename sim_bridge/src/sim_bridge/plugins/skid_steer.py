@@ -1,0 +1,68 @@
+"""``libgazebo_ros_skid_steer_drive.so``: four driven wheels, the two of each side together.
+
+Parameters, names and defaults as gazebo_ros (noetic) reads them:
+
+leftFrontJoint (left_front_joint), rightFrontJoint (right_front_joint),
+leftRearJoint (left_rear_joint), rightRearJoint (right_rear_joint), wheelSeparation
+(0.4 m), wheelDiameter (0.15 m), torque (5 N m), commandTopic (cmd_vel), odometryTopic
+(odom), odometryFrame (odom), robotBaseFrame (base_footprint), broadcastTF (false),
+updateRate (100 Hz), covariance_x (0.0001), covariance_y (0.0001), covariance_yaw
+(0.01), robotNamespace.
+
+As in Gazebo, odometry is the true pose of the robot (a skid-steer robot's wheels slip
+when it turns, so their speeds say little), with the given covariances.
+"""
+from __future__ import annotations
+
+import pybullet as pb
+
+from sim_bridge.drive_kinematics import wheel_speeds
+from sim_bridge.plugins.base import PluginError, Rate
+from sim_bridge.plugins.drive_base import DriveBase, covariance
+
+
+class SkidSteer(DriveBase):
+    def __init__(self, context, spec):
+        super().__init__(context, spec, spec.text("commandTopic", "cmd_vel"),
+                         spec.text("odometryTopic", "odom"))
+        self.left = [self.joint("leftFrontJoint", "left_front_joint"),
+                     self.joint("leftRearJoint", "left_rear_joint")]
+        self.right = [self.joint("rightFrontJoint", "right_front_joint"),
+                      self.joint("rightRearJoint", "right_rear_joint")]
+        self.separation = self.number("wheelSeparation", 0.4)
+        self.radius = self.number("wheelDiameter", 0.15) / 2.0
+        if self.separation <= 0 or self.radius <= 0:
+            raise PluginError(f"plugin '{spec.name}': wheelSeparation and wheelDiameter must "
+                              "be positive")
+        self.torque = self.number("torque", 5.0)
+        self.broadcast_tf = self.flag("broadcastTF", False)
+        self.rate = Rate(self.number("updateRate", 100.0))
+        self.covariance = covariance(self.number("covariance_x", 0.0001),
+                                     self.number("covariance_y", 0.0001),
+                                     self.number("covariance_yaw", 0.01))
+        robot = context.robot
+        self._joints = [robot.joint_index[j] for j in self.left + self.right]
+        self.applied = None
+
+    def before_step(self, now_ns: int) -> None:
+        left, right = wheel_speeds(*self.command, self.separation, self.radius)
+        targets = (left, left, right, right)
+        if targets != self.applied:
+            pb.setJointMotorControlArray(self.context.robot.id, self._joints, pb.VELOCITY_CONTROL,
+                                         targetVelocities=list(targets),
+                                         forces=[self.torque] * 4,
+                                         physicsClientId=self.context.client)
+            self.applied = targets
+
+    def after_step(self, now_ns: int) -> None:
+        if not self.rate.due(now_ns):
+            return
+        odometry = self.odometry_message(now_ns, *self.world_odometry(), self.covariance,
+                                         self.covariance)
+        self.odom_out.publish(odometry)
+        if self.broadcast_tf:
+            self.context.bus.send_transforms([self.odometry_transform(odometry)])
+
+    def reset(self, now_ns: int) -> None:
+        super().reset(now_ns)
+        self.rate.reset(now_ns)
