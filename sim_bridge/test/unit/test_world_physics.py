@@ -187,3 +187,50 @@ def test_skid_steer_drives_straight_and_turns_in_place(world, bus):
     odometry = bus.last("/odom")
     assert odometry.pose.covariance[0] == 0.0001 and odometry.pose.covariance[35] == 0.01
     assert any(t.child_frame_id == "base_footprint" for t in bus.published["/tf"])
+
+
+@pytest.fixture
+def gadget(world):
+    from world_fixtures import DATA
+    with open(f"{DATA}/gadget_bot.urdf", encoding="utf-8") as stream:
+        model = world.spawn_urdf("gadget", stream.read(), (0, 0, 0.001), joints={"pan": 0.5})
+    run(world, 0.5)
+    return model
+
+
+def test_an_unknown_plugin_warns_once_naming_it(bus, gadget):
+    named = [w for w in bus.warnings if "libgazebo_ros_mystery.so" in w]
+    assert len(named) == 1 and "'mystery'" in named[0]
+
+
+def test_imu_at_rest_reads_gravity_upwards(bus, gadget):
+    imu = bus.last("/imu")
+    assert imu.header.frame_id == "base_link"
+    assert imu.linear_acceleration.z == pytest.approx(9.8, abs=0.05)
+    assert abs(imu.linear_acceleration.x) < 0.05 and abs(imu.angular_velocity.z) < 1e-3
+
+
+def test_p3d_and_joint_states_report_the_truth(world, bus, gadget):
+    truth = bus.last("/pan_truth")
+    link_position, _ = gadget.robot.link_pose("pan_link")
+    assert truth.header.frame_id == "world" and truth.child_frame_id == "pan_link"
+    assert (truth.pose.pose.position.x, truth.pose.pose.position.y,
+            truth.pose.pose.position.z) == pytest.approx(link_position, abs=2e-3)
+    joints = bus.last("/joint_states")
+    assert joints.name == ["pan"]
+    assert joints.position[0] == pytest.approx(gadget.robot.joint_position_velocity("pan")[0])
+
+
+def test_planar_move_goes_sideways_and_ignores_nan(world, bus, gadget):
+    message = Twist()
+    message.linear.x, message.linear.y = 0.2, 0.1
+    bus.subscriptions["/cmd_vel"](message)
+    start, _ = world.pose("gadget")
+    run(world, 2.0)
+    end, _ = world.pose("gadget")
+    assert (end[0] - start[0], end[1] - start[1]) == pytest.approx((0.4, 0.2), abs=0.01)
+    message.linear.y = float("nan")
+    bus.subscriptions["/cmd_vel"](message)
+    assert any("linear.y=nan" in w for w in bus.warnings)
+    odometry = bus.last("/odom")
+    assert odometry.pose.pose.position.x == pytest.approx(end[0], abs=0.01)

@@ -11,16 +11,24 @@ from typing import List
 from sim_bridge.gazebo_tags import GazeboTags
 from sim_bridge.plugins.base import Plugin, PluginContext, PluginError
 from sim_bridge.plugins.diff_drive import DiffDrive
+from sim_bridge.plugins.imu import ImuSensor
+from sim_bridge.plugins.joint_state_publisher import JointStatePublisher
 from sim_bridge.plugins.laser import Laser
+from sim_bridge.plugins.p3d import P3D
+from sim_bridge.plugins.planar_move import PlanarMove
 from sim_bridge.plugins.skid_steer import SkidSteer
 
 MODEL_PLUGINS = {
     "libgazebo_ros_diff_drive.so": DiffDrive,
     "libgazebo_ros_skid_steer_drive.so": SkidSteer,
+    "libgazebo_ros_joint_state_publisher.so": JointStatePublisher,
+    "libgazebo_ros_p3d.so": P3D,
+    "libgazebo_ros_planar_move.so": PlanarMove,
 }
 SENSOR_PLUGINS = {
     "libgazebo_ros_laser.so": (Laser, ("ray", "gpu_ray")),
     "libgazebo_ros_gpu_laser.so": (Laser, ("ray", "gpu_ray")),
+    "libgazebo_ros_imu_sensor.so": (ImuSensor, ("imu",)),
 }
 
 

@@ -36,14 +36,18 @@ class DriveBase(Plugin):
 
     def _on_command(self, message: Twist) -> None:
         """rospy's thread: checks and stores the command, nothing else."""
-        linear, angular = message.linear.x, message.angular.z
-        if not (math.isfinite(linear) and math.isfinite(angular)):
-            self.context.bus.warn_throttled(
-                f"{self.command_topic}:nan", 5.0,
-                f"{self.command_topic}: ignoring a command with linear.x={linear}, "
-                f"angular.z={angular}; both must be finite numbers")
-            return
-        self.command = (linear, angular)
+        if self.finite_command(linear_x=message.linear.x, angular_z=message.angular.z):
+            self.command = (message.linear.x, message.angular.z)
+
+    def finite_command(self, **values: float) -> bool:
+        """True when every value is finite; otherwise a throttled warning naming them."""
+        if all(math.isfinite(v) for v in values.values()):
+            return True
+        listed = ", ".join(f"{name.replace('_', '.')}={value}" for name, value in values.items())
+        self.context.bus.warn_throttled(
+            f"{self.command_topic}:nan", 5.0,
+            f"{self.command_topic}: ignoring a command with {listed}; all must be finite numbers")
+        return False
 
     def odometry_message(self, now_ns: int, position: Sequence[float],
                          orientation: Sequence[float], twist: Sequence[float],
