@@ -217,7 +217,8 @@ class SimBridgeNode:
                                                       position, orientation)
         if kind == "urdf":
             self.world.spawn_urdf(request.model_name, request.model_xml, position, orientation,
-                                  request.robot_namespace, source=f"model '{request.model_name}'")
+                                  request.robot_namespace, source=f"model '{request.model_name}'",
+                                  tf_prefix=self._tf_prefix(request.robot_namespace))
         else:
             spec = parse_model(request.model_xml, f"model '{request.model_name}'")
             if request.model_name:
@@ -226,6 +227,13 @@ class SimBridgeNode:
         rospy.loginfo(f"spawned model '{request.model_name}'")
         return SpawnModelResponse(True, f"SpawnModel: Successfully spawned entity "
                                         f"'{request.model_name}'")
+
+    @staticmethod
+    def _tf_prefix(namespace: str) -> str:
+        """The ``tf_prefix`` parameter of the model's namespace (gazebo_ros's plugins prefix
+        their frames with it); "" when there is none."""
+        namespace = namespace.strip("/")
+        return str(rospy.get_param(f"/{namespace}/tf_prefix" if namespace else "/tf_prefix", ""))
 
     def _spawn_urdf(self, request):
         return self._spawn(request, "urdf")

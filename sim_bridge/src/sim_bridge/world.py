@@ -279,7 +279,8 @@ class World:
     # --- robots from URDF ---------------------------------------------------------------
     def spawn_urdf(self, name: str, xml: str, position: Sequence[float] = (0, 0, 0),
                    orientation: Sequence[float] = (0, 0, 0, 1), namespace: str = "",
-                   joints: Optional[Mapping[str, float]] = None, source: str = "") -> Model:
+                   joints: Optional[Mapping[str, float]] = None, source: str = "",
+                   tf_prefix: str = "") -> Model:
         if not name:
             raise SimError("the model needs a name")
         if name in self.models:
@@ -303,7 +304,7 @@ class World:
         robot.reset_joints(joints)
         context = PluginContext(self.client, robot, name, model.namespace, self.bus,
                                 np.random.default_rng([self.seed, len(self.models)]),
-                                self.step_size, self.gravity, self.cast_rays)
+                                self.step_size, self.gravity, self.cast_rays, tf_prefix)
         try:
             model.plugins = create_plugins(context, tags)
         except Exception:

@@ -59,6 +59,8 @@ class PluginContext:
     gravity: Sequence[float] = (0.0, 0.0, -9.8)
     # cast_rays(origin, unit directions (N, 3), near, far) -> distances (N,), inf: nothing
     cast_rays: Optional[Callable[..., np.ndarray]] = None
+    # prefix of the frames the plugins name (the namespace's tf_prefix parameter), "" none
+    tf_prefix: str = ""
 
 
 def resolve_topic(namespace: str, topic: str) -> str:
@@ -79,8 +81,8 @@ class Plugin:
     def __init__(self, context: PluginContext, spec: PluginSpec):
         self.context = context
         self.spec = spec
-        namespace = spec.text("robotNamespace")
-        self.namespace = (namespace if namespace is not None else context.namespace).strip("/")
+        # as gazebo_ros: spawn_model's -robot_namespace overrides every plugin's own
+        self.namespace = (context.namespace or spec.text("robotNamespace") or "").strip("/")
 
     # --- parameters -------------------------------------------------------------------
     def param(self, tag: str, default: Optional[str] = None) -> Optional[str]:
@@ -118,6 +120,12 @@ class Plugin:
 
     def topic(self, name: str) -> str:
         return resolve_topic(self.namespace, name)
+
+    def frame(self, name: str) -> str:
+        """A frame name with the model's tf_prefix, as tf::resolve makes it."""
+        name = name.lstrip("/")
+        prefix = self.context.tf_prefix.strip("/")
+        return f"{prefix}/{name}" if prefix else name
 
     # --- the step ---------------------------------------------------------------------
     def before_step(self, now_ns: int) -> None:

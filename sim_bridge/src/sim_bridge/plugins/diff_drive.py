@@ -138,8 +138,8 @@ class DiffDrive(DriveBase):
             position, orientation = pb.multiplyTransforms(*inverse, *child)
             transform = TransformStamped()
             transform.header.stamp = time
-            transform.header.frame_id = joint.parent
-            transform.child_frame_id = joint.child
+            transform.header.frame_id = self.frame(joint.parent)
+            transform.child_frame_id = self.frame(joint.child)
             transform.transform.translation.x, transform.transform.translation.y, \
                 transform.transform.translation.z = position
             rotation = transform.transform.rotation

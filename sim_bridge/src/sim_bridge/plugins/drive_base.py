@@ -27,8 +27,8 @@ def covariance(x: float, y: float, yaw: float, others: float = 1e12) -> list:
 class DriveBase(Plugin):
     def __init__(self, context, spec, command_topic: str, odometry_topic: str):
         super().__init__(context, spec)
-        self.odom_frame = self.param("odometryFrame", "odom")
-        self.base_frame = self.param("robotBaseFrame", "base_footprint")
+        self.odom_frame = self.frame(self.param("odometryFrame", "odom"))
+        self.base_frame = self.frame(self.param("robotBaseFrame", "base_footprint"))
         self.command_topic = self.topic(command_topic)
         self.command: Tuple[float, float] = (0.0, 0.0)
         self.odom_out = context.bus.publisher(self.topic(odometry_topic), Odometry, queue_size=1)

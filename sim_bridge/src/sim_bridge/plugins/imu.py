@@ -36,7 +36,7 @@ class ImuSensor(Plugin):
         rate = self.number("updateRateHZ", float(rate_text) if rate_text else 0.0)
         self.rate = Rate(rate)
         self.noise = self.number("gaussianNoise", 0.0)
-        self.frame = self.param("frameName", self.link)
+        self.frame_id = self.frame(self.param("frameName", self.link))
         self.output = context.bus.publisher(self.topic(self.param("topicName", "imu")), Imu,
                                             queue_size=1)
         self._last = None  # (time ns, velocity of the sensor point in the world)
@@ -74,7 +74,7 @@ class ImuSensor(Plugin):
             body_rate = body_rate + self.context.rng.normal(0.0, self.noise, 3)
         message = Imu()
         message.header.stamp = stamp(now_ns)
-        message.header.frame_id = self.frame
+        message.header.frame_id = self.frame_id
         message.orientation.x, message.orientation.y, message.orientation.z, \
             message.orientation.w = orientation
         message.angular_velocity.x, message.angular_velocity.y, message.angular_velocity.z = \

@@ -68,7 +68,7 @@ class Laser(Plugin):
                   else np.array([self.angle_min]))
         self.increment = (self.angle_max - self.angle_min) / (samples - 1) if samples > 1 else 0.0
         self.directions = np.stack([np.cos(angles), np.sin(angles), np.zeros(samples)], axis=1)
-        self.frame = self.param("frameName", "/world")
+        self.frame_id = self.frame(self.param("frameName", "/world"))
         self.output = context.bus.publisher(self.topic(self.param("topicName", "/world")),
                                             LaserScan, queue_size=1)
         if self.link not in context.robot.link_index:
@@ -99,7 +99,7 @@ class Laser(Plugin):
             return
         message = LaserScan()
         message.header.stamp = stamp(now_ns)
-        message.header.frame_id = self.frame
+        message.header.frame_id = self.frame_id
         message.angle_min = self.angle_min
         message.angle_max = self.angle_max
         message.angle_increment = self.increment

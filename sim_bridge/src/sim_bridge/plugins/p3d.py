@@ -29,9 +29,9 @@ class P3D(Plugin):
         topic = self.param("topicName")
         if not topic:
             raise PluginError(f"plugin '{spec.name}' ({spec.filename}) needs <topicName>")
-        self.frame = self.param("frameName", "world")
-        if self.frame not in WORLD_FRAMES and self.frame not in robot.link_index:
-            raise PluginError(f"plugin '{spec.name}': <frameName> '{self.frame}' is neither "
+        self.reference = self.param("frameName", "world")
+        if self.reference not in WORLD_FRAMES and self.reference not in robot.link_index:
+            raise PluginError(f"plugin '{spec.name}': <frameName> '{self.reference}' is neither "
                               "world nor a link of the model")
         self.offset_position = self._vector("xyzOffsets")
         self.offset_orientation = quaternion_from_rpy(*self._vector("rpyOffsets"))
@@ -70,12 +70,12 @@ class P3D(Plugin):
                                                       self.offset_position,
                                                       self.offset_orientation)
         linear, angular = self._link_velocity(self.body)
-        if self.frame not in WORLD_FRAMES:
-            frame_position, frame_orientation = robot.link_pose(self.frame)
+        if self.reference not in WORLD_FRAMES:
+            frame_position, frame_orientation = robot.link_pose(self.reference)
             inverse = pb.invertTransform(frame_position, frame_orientation)
             position, orientation = pb.multiplyTransforms(*inverse, position, orientation)
             rotation = quaternion_matrix(frame_orientation).T
-            frame_linear, frame_angular = self._link_velocity(self.frame)
+            frame_linear, frame_angular = self._link_velocity(self.reference)
             linear, angular = rotation @ (linear - frame_linear), rotation @ (angular - frame_angular)
         position = np.asarray(position, dtype=float)
         if self.noise > 0:
@@ -85,8 +85,9 @@ class P3D(Plugin):
             angular = angular + rng.normal(0.0, self.noise, 3)
         message = Odometry()
         message.header.stamp = stamp(now_ns)
-        message.header.frame_id = self.frame
-        message.child_frame_id = self.body
+        message.header.frame_id = (self.reference if self.reference in WORLD_FRAMES
+                                   else self.frame(self.reference))
+        message.child_frame_id = self.frame(self.body)
         pose = message.pose.pose
         pose.position.x, pose.position.y, pose.position.z = position.tolist()
         pose.orientation.x, pose.orientation.y, pose.orientation.z, pose.orientation.w = \
