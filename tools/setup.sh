@@ -18,7 +18,9 @@ source "$repo/tools/platform.sh"
 check_platform
 
 # --- 2. Debian packages ---------------------------------------------------------------
-# What each group is for: ROS 1 runtime and build, the robot tools, headless rviz, the venv.
+# What each group is for: ROS 1 runtime and build, message bindings (Python) and their CMake
+# configs (lib*-msgs-dev, for packages that generate messages), the robot tools, headless
+# rviz, the venv.
 apt_packages=(
   catkin catkin-lint python3-catkin-pkg ros-message-generation ros-message-runtime
   python3-genpy python3-genmsg cmake make g++
@@ -29,6 +31,7 @@ apt_packages=(
   python3-std-msgs python3-std-srvs python3-geometry-msgs python3-sensor-msgs python3-nav-msgs
   python3-visualization-msgs python3-trajectory-msgs python3-actionlib-msgs python3-rosgraph-msgs
   python3-tf2-msgs python3-rospkg
+  libstd-msgs-dev libgeometry-msgs-dev libtrajectory-msgs-dev libactionlib-msgs-dev
   ros-robot-state-publisher joint-state-publisher joint-state-publisher-gui rviz
   liburdfdom-tools
   xvfb xauth x11-utils imagemagick
