@@ -2,5 +2,5 @@
 from catkin_pkg.python_setup import generate_distutils_setup
 from setuptools import setup
 
-setup(**generate_distutils_setup(packages=["sim_bridge", "sim_bridge.plugins"],
+setup(**generate_distutils_setup(packages=["sim_bridge", "sim_bridge.plugins", "sim_bridge.ros_control"],
                                  package_dir={"": "src"}))

@@ -12,7 +12,8 @@ pybullet differs from Gazebo in ways that matter here, and this module hides the
 - pybullet's URDF importer pads every collision shape by a 1 mm margin, which makes a
   5 cm wheel roll 2% too far per turn: primitive collision shapes are shrunk by it, so
   that contacts happen at the URDF's own surfaces;
-- ``package://`` mesh URIs are resolved to files (pybullet knows no ROS packages).
+- ``package://`` mesh URIs are resolved to files (pybullet knows no ROS packages);
+- a root link named ``world`` fixes the robot to the world, as in Gazebo.
 """
 from __future__ import annotations
 
@@ -112,7 +113,7 @@ class RobotBody:
             path = stream.name
         try:
             self.id = pb.loadURDF(path, list(position), list(orientation), flags=flags,
-                                  physicsClientId=client)
+                                  useFixedBase=model.root() == "world", physicsClientId=client)
         except pb.error as error:
             raise UrdfError(f"{model.source}: pybullet could not load it: {error}") from None
         finally:

@@ -71,12 +71,70 @@ class Config:
         return config
 
 
+class PhysicsThread:
+    """Work for the physics thread, handed over from rospy's threads. The physics loop calls
+    ``serve()`` between steps; ``call`` waits for the result, ``post`` does not."""
+
+    def __init__(self):
+        self.jobs: "queue.Queue" = queue.Queue()
+
+    def post(self, work: Callable[[], Any]) -> None:
+        self.jobs.put(work)
+
+    def call(self, work: Callable[[], Any]) -> Any:
+        done = threading.Event()
+        box: Dict[str, Any] = {}
+
+        def job():
+            try:
+                box["result"] = work()
+            except Exception as error:  # handed back to the calling thread
+                box["error"] = error
+            finally:
+                done.set()
+
+        self.jobs.put(job)
+        if not done.wait(REQUEST_TIMEOUT):
+            raise SimError(f"the simulator did not take the request within "
+                           f"{REQUEST_TIMEOUT:.0f} s")
+        if "error" in box:
+            raise box["error"]
+        return box.get("result")
+
+    def serve(self) -> None:
+        if self.jobs.empty():  # the usual case, without raising queue.Empty
+            return
+        while True:
+            try:
+                job = self.jobs.get_nowait()
+            except queue.Empty:
+                return
+            job()
+
+
 class RosBus(Bus):
     """Bus for plugins, on rospy."""
 
-    def __init__(self):
+    def __init__(self, physics: PhysicsThread):
+        self.physics = physics
         self._tf = rospy.Publisher("/tf", TFMessage, queue_size=100)
         self._throttle: Dict[str, float] = {}
+
+    def service(self, name, srv_class, handler):
+        def serve(request):
+            try:
+                return self.physics.call(lambda: handler(request))
+            except (SimError, PluginError, ValueError) as error:
+                raise rospy.ServiceException(str(error))
+        return rospy.Service(name, srv_class, serve)
+
+    def action_server(self, name, action_class, on_goal, on_cancel):
+        import actionlib  # only robots with trajectory controllers need it
+        server = actionlib.ActionServer(
+            name, action_class, lambda handle: self.physics.post(lambda: on_goal(handle)),
+            lambda handle: self.physics.post(lambda: on_cancel(handle)), auto_start=False)
+        server.start()
+        return server
 
     def publisher(self, topic, msg_class, queue_size=10, latch=False):
         return rospy.Publisher(topic, msg_class, queue_size=queue_size, latch=latch)
@@ -134,10 +192,10 @@ def _fill_twist(twist: Twist, linear, angular) -> None:
 class SimBridgeNode:
     """gazebo_ros's interface over a World; ``run()`` is the physics loop."""
 
-    def __init__(self, config: Config, world: World):
+    def __init__(self, config: Config, world: World, physics: PhysicsThread):
         self.config = config
         self.world = world
-        self.requests: "queue.Queue" = queue.Queue()
+        self.physics = physics
         self.clock_period_ns = int(1e9 / config.pub_clock_frequency) \
             if config.pub_clock_frequency > 0 else 0
         self.states_period_ns = int(1e9 / config.model_states_frequency) \
@@ -167,25 +225,6 @@ class SimBridgeNode:
                          for name, kind, handler in services]
 
     # --- requests: run in the physics thread ---------------------------------------------
-    def _in_physics_thread(self, work: Callable[[], Any]) -> Any:
-        done = threading.Event()
-        box: Dict[str, Any] = {}
-
-        def job():
-            try:
-                box["result"] = work()
-            except Exception as error:  # handed back to the service thread
-                box["error"] = error
-            finally:
-                done.set()
-
-        self.requests.put(job)
-        if not done.wait(REQUEST_TIMEOUT):
-            raise SimError(f"the simulator did not take the request within {REQUEST_TIMEOUT:.0f} s")
-        if "error" in box:
-            raise box["error"]
-        return box.get("result")
-
     def _guarded(self, handler, kind):
         """Runs ``handler`` in the physics thread; a user's error becomes success=false with
         the cause, and the node goes on."""
@@ -193,7 +232,7 @@ class SimBridgeNode:
 
         def serve(request):
             try:
-                return self._in_physics_thread(lambda: handler(request))
+                return self.physics.call(lambda: handler(request))
             except (SimError, UrdfError, SdfError, PluginError, ValueError) as error:
                 rospy.logerr(f"{kind._type.split('/')[-1]}: {error}")
                 response = response_class()
@@ -310,16 +349,6 @@ class SimBridgeNode:
         return EmptyResponse()
 
     # --- the loop -------------------------------------------------------------------------
-    def _serve_requests(self) -> None:
-        if self.requests.empty():  # the usual case, without raising queue.Empty
-            return
-        while True:
-            try:
-                job = self.requests.get_nowait()
-            except queue.Empty:
-                return
-            job()
-
     def _publish_clock(self) -> None:
         self.clock.publish(Clock(clock=rospy.Time(nsecs=self.world.now_ns)))
 
@@ -355,7 +384,7 @@ class SimBridgeNode:
         self._publish_clock()
         last_paused_clock = 0.0
         while not rospy.is_shutdown():
-            self._serve_requests()
+            self.physics.serve()
             if self.world.paused:
                 now = time.monotonic()
                 if now - last_paused_clock > PAUSED_CLOCK_PERIOD:
@@ -392,13 +421,14 @@ def build_world(config: Config, bus: Bus) -> World:
 
 def main() -> None:
     rospy.init_node("gazebo")
+    physics = PhysicsThread()
     try:
         config = Config.from_parameters()
-        world = build_world(config, RosBus())
+        world = build_world(config, RosBus(physics))
     except (ValueError, SdfError) as error:
         rospy.logfatal(f"sim_bridge cannot start: {error}")
         raise SystemExit(1) from None
-    node = SimBridgeNode(config, world)
+    node = SimBridgeNode(config, world, physics)
     node.advertise()
     rospy.loginfo(f"sim_bridge ready (real_time_factor {config.real_time_factor:g}, "
                   f"{'paused' if world.paused else 'running'})")

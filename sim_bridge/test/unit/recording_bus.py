@@ -12,6 +12,8 @@ class _Handle:
     def unregister(self):
         self.bus.closed.append(self.topic)
 
+    shutdown = unregister
+
 
 class RecordingBus(Bus):
     def __init__(self, params=None):
@@ -20,6 +22,8 @@ class RecordingBus(Bus):
         self.warnings = []
         self.closed = []
         self.params = params or {}
+        self.services = {}
+        self.actions = {}
 
     def publisher(self, topic, msg_class, queue_size=10, latch=False):
         return _Handle(self, topic)
@@ -27,6 +31,14 @@ class RecordingBus(Bus):
     def subscriber(self, topic, msg_class, callback):
         self.subscriptions[topic] = callback
         return _Handle(self, topic)
+
+    def service(self, name, srv_class, handler):
+        self.services[name] = handler
+        return _Handle(self, name)
+
+    def action_server(self, name, action_class, on_goal, on_cancel):
+        self.actions[name] = (on_goal, on_cancel)
+        return _Handle(self, name)
 
     def send_transforms(self, transforms):
         self.published.setdefault("/tf", []).extend(transforms)

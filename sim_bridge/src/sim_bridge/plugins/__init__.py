@@ -17,6 +17,7 @@ from sim_bridge.plugins.laser import Laser
 from sim_bridge.plugins.p3d import P3D
 from sim_bridge.plugins.planar_move import PlanarMove
 from sim_bridge.plugins.skid_steer import SkidSteer
+from sim_bridge.ros_control import RosControl
 
 MODEL_PLUGINS = {
     "libgazebo_ros_diff_drive.so": DiffDrive,
@@ -24,6 +25,7 @@ MODEL_PLUGINS = {
     "libgazebo_ros_joint_state_publisher.so": JointStatePublisher,
     "libgazebo_ros_p3d.so": P3D,
     "libgazebo_ros_planar_move.so": PlanarMove,
+    "libgazebo_ros_control.so": RosControl,
 }
 SENSOR_PLUGINS = {
     "libgazebo_ros_laser.so": (Laser, ("ray", "gpu_ray")),

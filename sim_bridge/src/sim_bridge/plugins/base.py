@@ -34,6 +34,17 @@ class Bus:
     def send_transforms(self, transforms: Sequence[Any]) -> None:
         raise NotImplementedError
 
+    def service(self, name: str, srv_class, handler: Callable[[Any], Any]):
+        """Offers a service; ``handler`` runs in the physics thread. Returns a handle with
+        ``shutdown()``."""
+        raise NotImplementedError
+
+    def action_server(self, name: str, action_class, on_goal: Callable[[Any], None],
+                      on_cancel: Callable[[Any], None]):
+        """Offers an actionlib action; the callbacks get actionlib goal handles and run in
+        the physics thread."""
+        raise NotImplementedError
+
     def info(self, text: str) -> None:
         raise NotImplementedError
 

@@ -1,0 +1,208 @@
+"""``libgazebo_ros_control.so``: ros_control's controller manager, emulated.
+
+Plugin parameters as gazebo_ros_control's: ``robotNamespace`` (where the controller manager
+and the controllers live), ``controlPeriod`` (seconds; default the physics step),
+``robotParam`` and ``robotSimType`` (accepted; the spawned model's own description and
+DefaultRobotHWSim's behaviour are used).
+
+Joints are the ones with a ``<transmission>`` (see :mod:`.hardware`). Controllers are
+configured on the parameter server, under ``<namespace>/<name>`` with a ``type``, and loaded,
+started, stopped and unloaded through controller_manager's services under
+``<namespace>/controller_manager/`` — what ``rosrun controller_manager spawner`` calls.
+Types: see ``CONTROLLER_TYPES``.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Dict
+
+from controller_manager_msgs.msg import ControllerState, HardwareInterfaceResources
+from controller_manager_msgs.srv import (ListControllers, ListControllersResponse, LoadController,
+                                         LoadControllerResponse, SwitchController,
+                                         SwitchControllerResponse, UnloadController,
+                                         UnloadControllerResponse)
+
+from sim_bridge.plugins.base import Plugin, PluginError, Rate, resolve_topic
+from sim_bridge.ros_control.diff_drive_controller import DiffDriveController
+from sim_bridge.ros_control.hardware import RobotHardware
+from sim_bridge.ros_control.joint_controllers import (EffortController, EffortPositionController,
+                                                      EffortVelocityController,
+                                                      PositionController, VelocityController)
+from sim_bridge.ros_control.joint_state_controller import JointStateController
+from sim_bridge.ros_control.trajectory_controller import (EffortTrajectoryController,
+                                                          PositionTrajectoryController,
+                                                          VelocityTrajectoryController)
+
+CONTROLLER_TYPES = {
+    "joint_state_controller/JointStateController": JointStateController,
+    "position_controllers/JointTrajectoryController": PositionTrajectoryController,
+    "velocity_controllers/JointTrajectoryController": VelocityTrajectoryController,
+    "effort_controllers/JointTrajectoryController": EffortTrajectoryController,
+    "position_controllers/JointPositionController": PositionController,
+    "velocity_controllers/JointVelocityController": VelocityController,
+    "effort_controllers/JointEffortController": EffortController,
+    "effort_controllers/JointPositionController": EffortPositionController,
+    "effort_controllers/JointVelocityController": EffortVelocityController,
+    "diff_drive_controller/DiffDriveController": DiffDriveController,
+}
+INTERFACE_NAMES = {"position": "hardware_interface/PositionJointInterface",
+                   "velocity": "hardware_interface/VelocityJointInterface",
+                   "effort": "hardware_interface/EffortJointInterface"}
+
+
+@dataclass
+class ControllerIO:
+    """What a controller may use: the bus, and names resolved in the robot's namespace."""
+
+    bus: object
+    namespace: str
+    robot: object
+    tf_prefix: str
+
+    def topic(self, name: str) -> str:
+        return resolve_topic(self.namespace, name)
+
+    def param_path(self, controller: str, key: str) -> str:
+        return resolve_topic(self.namespace, f"{controller}/{key}")
+
+    def frame(self, name: str) -> str:
+        prefix = self.tf_prefix.strip("/")
+        return f"{prefix}/{name.lstrip('/')}" if prefix else name.lstrip("/")
+
+
+@dataclass
+class Loaded:
+    controller: object
+    type: str
+    state: str = "initialized"  # then "running" or "stopped", as controller_manager says
+
+
+class RosControl(Plugin):
+    def __init__(self, context, spec):
+        super().__init__(context, spec)
+        transmissions = context.robot.model.transmissions
+        if not transmissions:
+            raise PluginError(f"plugin '{spec.name}' (libgazebo_ros_control.so): model "
+                              f"'{context.model_name}' has no <transmission>, so no joint to "
+                              "control")
+        self.hardware = RobotHardware(context, transmissions)
+        period = self.number("controlPeriod", context.step_size)
+        self.rate = Rate(1.0 / period if period > context.step_size else 0.0)
+        self.period = max(period, context.step_size)
+        self.io = ControllerIO(context.bus, self.namespace, context.robot, context.tf_prefix)
+        self.controllers: Dict[str, Loaded] = {}
+        self.now_ns = 0
+        bus = context.bus
+        base = self.topic("controller_manager")
+        self.services = [
+            bus.service(f"{base}/load_controller", LoadController, self._load),
+            bus.service(f"{base}/unload_controller", UnloadController, self._unload),
+            bus.service(f"{base}/switch_controller", SwitchController, self._switch),
+            bus.service(f"{base}/list_controllers", ListControllers, self._list),
+        ]
+
+    # --- controller_manager's services (run in the physics thread) ----------------------
+    def _load(self, request) -> LoadControllerResponse:
+        name = request.name
+        if name in self.controllers:
+            self.context.bus.warn(f"controller_manager: '{name}' is loaded already")
+            return LoadControllerResponse(False)
+        path = resolve_topic(self.namespace, name)
+        params = self.context.bus.get_param(path, None)
+        if not isinstance(params, dict) or "type" not in params:
+            self.context.bus.warn(f"controller_manager: cannot load '{name}': no parameter "
+                                  f"'{path}/type' (load the controllers' yaml first)")
+            return LoadControllerResponse(False)
+        controller_class = CONTROLLER_TYPES.get(params["type"])
+        if controller_class is None:
+            self.context.bus.warn(f"controller_manager: cannot load '{name}': type "
+                                  f"'{params['type']}' is not emulated; known types: "
+                                  f"{', '.join(sorted(CONTROLLER_TYPES))}")
+            return LoadControllerResponse(False)
+        try:
+            controller = controller_class(name, params, self.hardware, self.io)
+        except PluginError as error:
+            self.context.bus.warn(f"controller_manager: cannot load '{name}': {error}")
+            return LoadControllerResponse(False)
+        self.controllers[name] = Loaded(controller, params["type"])
+        self.context.bus.info(f"controller_manager: loaded '{name}' ({params['type']})")
+        return LoadControllerResponse(True)
+
+    def _unload(self, request) -> UnloadControllerResponse:
+        loaded = self.controllers.get(request.name)
+        if loaded is None or loaded.state == "running":
+            why = "not loaded" if loaded is None else "running (stop it first)"
+            self.context.bus.warn(f"controller_manager: cannot unload '{request.name}': {why}")
+            return UnloadControllerResponse(False)
+        loaded.controller.close()
+        del self.controllers[request.name]
+        return UnloadControllerResponse(True)
+
+    def _switch(self, request) -> SwitchControllerResponse:
+        strict = request.strictness == SwitchController._request_class.STRICT
+        unknown = [n for n in list(request.start_controllers) + list(request.stop_controllers)
+                   if n not in self.controllers]
+        if unknown and strict:
+            self.context.bus.warn(f"controller_manager: cannot switch: not loaded: {unknown}")
+            return SwitchControllerResponse(False)
+        starting = [n for n in request.start_controllers if n in self.controllers]
+        stopping = [n for n in request.stop_controllers if n in self.controllers]
+        # a commanded joint may have one running controller only
+        busy = {j: n for n, c in self.controllers.items()
+                if c.state == "running" and n not in stopping and c.controller.interface
+                for j in c.controller.joints}
+        for name in starting:
+            controller = self.controllers[name].controller
+            clash = [j for j in controller.joints if controller.interface and j in busy
+                     and busy[j] != name]
+            if clash:
+                self.context.bus.warn(f"controller_manager: '{name}' would command "
+                                      f"{clash}, which '{busy[clash[0]]}' commands")
+                if strict:
+                    return SwitchControllerResponse(False)
+                starting.remove(name)
+        for name in stopping:
+            if self.controllers[name].state == "running":
+                self.controllers[name].controller.stop(self.now_ns)
+                self.controllers[name].state = "stopped"
+        self.hardware.read()
+        for name in starting:
+            if self.controllers[name].state != "running":
+                self.controllers[name].controller.start(self.now_ns)
+                self.controllers[name].state = "running"
+        return SwitchControllerResponse(True)
+
+    def _list(self, _request) -> ListControllersResponse:
+        states = []
+        for name, loaded in self.controllers.items():
+            controller = loaded.controller
+            claimed = ([HardwareInterfaceResources(INTERFACE_NAMES[controller.interface],
+                                                   list(controller.joints))]
+                       if controller.interface else [])
+            states.append(ControllerState(name, loaded.state, loaded.type, claimed))
+        return ListControllersResponse(states)
+
+    # --- the step ---------------------------------------------------------------------------
+    def before_step(self, now_ns: int) -> None:
+        self.now_ns = now_ns
+        if not self.rate.due(now_ns):
+            return
+        self.hardware.read()
+        for loaded in self.controllers.values():
+            if loaded.state == "running":
+                loaded.controller.update(now_ns, self.period)
+        self.hardware.write()
+
+    def reset(self, now_ns: int) -> None:
+        self.now_ns = now_ns
+        self.rate.reset(now_ns)
+        self.hardware.read()
+        for loaded in self.controllers.values():
+            if loaded.state == "running":
+                loaded.controller.start(now_ns)
+
+    def close(self) -> None:
+        for loaded in self.controllers.values():
+            loaded.controller.close()
+        for service in self.services:
+            service.shutdown()

@@ -1,0 +1,81 @@
+"""Joint trajectories as ros_controllers' JointTrajectoryController samples them.
+
+A trajectory starts from the joints' state when it is received and passes through its
+points at their times. Each segment is interpolated per joint by what both its ends give:
+positions only → linear; with velocities → cubic; with accelerations too → quintic.
+Times are seconds of simulated time. Pure maths: no ROS, no pybullet.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import List, Optional, Sequence, Tuple
+
+import numpy as np
+
+
+@dataclass
+class Waypoint:
+    time: float
+    positions: np.ndarray
+    velocities: Optional[np.ndarray] = None
+    accelerations: Optional[np.ndarray] = None
+
+
+def _segment(start: Waypoint, end: Waypoint, t: float) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:
+    duration = end.time - start.time
+    if duration <= 0:
+        zeros = np.zeros_like(end.positions)
+        return end.positions.copy(), zeros, zeros
+    s = min(max(t - start.time, 0.0), duration)
+    p0, p1 = start.positions, end.positions
+    if start.velocities is None or end.velocities is None:  # linear
+        velocity = (p1 - p0) / duration
+        return p0 + velocity * s, velocity, np.zeros_like(p0)
+    v0, v1 = start.velocities, end.velocities
+    if start.accelerations is None or end.accelerations is None:  # cubic
+        a2 = (3 * (p1 - p0) - (2 * v0 + v1) * duration) / duration ** 2
+        a3 = (2 * (p0 - p1) + (v0 + v1) * duration) / duration ** 3
+        return (p0 + v0 * s + a2 * s ** 2 + a3 * s ** 3,
+                v0 + 2 * a2 * s + 3 * a3 * s ** 2,
+                2 * a2 + 6 * a3 * s)
+    c0, c1 = start.accelerations, end.accelerations  # quintic
+    T = duration
+    b0, b1, b2 = p0, v0, c0 / 2
+    b3 = (20 * (p1 - p0) - (8 * v1 + 12 * v0) * T - (3 * c0 - c1) * T ** 2) / (2 * T ** 3)
+    b4 = (30 * (p0 - p1) + (14 * v1 + 16 * v0) * T + (3 * c0 - 2 * c1) * T ** 2) / (2 * T ** 4)
+    b5 = (12 * (p1 - p0) - 6 * (v1 + v0) * T - (c0 - c1) * T ** 2) / (2 * T ** 5)
+    return (b0 + b1 * s + b2 * s ** 2 + b3 * s ** 3 + b4 * s ** 4 + b5 * s ** 5,
+            b1 + 2 * b2 * s + 3 * b3 * s ** 2 + 4 * b4 * s ** 3 + 5 * b5 * s ** 4,
+            2 * b2 + 6 * b3 * s + 12 * b4 * s ** 2 + 20 * b5 * s ** 3)
+
+
+class Trajectory:
+    """Waypoints after a start state; ``sample(t)`` gives (positions, velocities, accelerations)."""
+
+    def __init__(self, start: Waypoint, points: Sequence[Waypoint]):
+        self.points: List[Waypoint] = [start] + [p for p in points if p.time >= start.time]
+        # the start state takes the form of the first point (a linear first segment stays linear)
+        if len(self.points) > 1:
+            first = self.points[1]
+            if first.velocities is None:
+                start.velocities = None
+            if first.accelerations is None:
+                start.accelerations = None
+
+    @property
+    def end_time(self) -> float:
+        return self.points[-1].time
+
+    @property
+    def goal(self) -> np.ndarray:
+        return self.points[-1].positions
+
+    def sample(self, t: float):
+        if t >= self.end_time or len(self.points) == 1:
+            last = self.points[-1]
+            zeros = np.zeros_like(last.positions)
+            return last.positions.copy(), zeros, zeros
+        for start, end in zip(self.points, self.points[1:]):
+            if t <= end.time:
+                return _segment(start, end, t)
+        raise AssertionError("unreachable: t is before the end time")

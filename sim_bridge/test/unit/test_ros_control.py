@@ -1,0 +1,184 @@
+"""The ros_control emulation on pybullet.DIRECT: controller manager services, the
+trajectory, position and joint state controllers, against the joints' true state."""
+import math
+
+import pytest
+import yaml
+from control_msgs.msg import FollowJointTrajectoryGoal, FollowJointTrajectoryResult
+from controller_manager_msgs.srv import (ListControllersRequest, LoadControllerRequest,
+                                         SwitchControllerRequest, UnloadControllerRequest)
+from std_msgs.msg import Float64
+from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
+
+import genpy
+from recording_bus import RecordingBus
+from sim_bridge.world import World
+from urdf_tools.xacro_loader import expand
+from world_fixtures import DATA, run
+
+MANAGER = "/arm_bot/controller_manager"
+
+
+class GoalHandle:
+    """Stands in for actionlib's ServerGoalHandle: records what the controller says."""
+
+    count = 0
+
+    def __init__(self, goal):
+        GoalHandle.count += 1
+        self.goal, self.id, self.status, self.result, self.feedback = goal, GoalHandle.count, \
+            "pending", None, []
+
+    def get_goal(self):
+        return self.goal
+
+    def get_goal_id(self):
+        return type("GoalID", (), {"id": self.id})()
+
+    def set_accepted(self, text=""):
+        self.status = "active"
+
+    def _end(self, status, result, text):
+        self.status, self.result = status, result
+
+    def set_rejected(self, result=None, text=""):
+        self._end("rejected", result, text)
+
+    def set_succeeded(self, result=None, text=""):
+        self._end("succeeded", result, text)
+
+    def set_aborted(self, result=None, text=""):
+        self._end("aborted", result, text)
+
+    def set_canceled(self, result=None, text=""):
+        self._end("canceled", result, text)
+
+    def publish_feedback(self, feedback):
+        self.feedback.append(feedback)
+
+
+def arm(interface="PositionJointInterface"):
+    with open(f"{DATA}/arm_bot_controllers.yaml", encoding="utf-8") as stream:
+        configuration = yaml.safe_load(stream)
+    bus = RecordingBus({f"/arm_bot/{name}": value for name, value in configuration.items()})
+    world = World(bus, ray_threads=1)
+    model = world.spawn_urdf("arm_bot", expand(f"{DATA}/arm_bot.urdf.xacro",
+                                               {"arm_interface": interface}))
+    return world, bus, model
+
+
+def start(bus, *names):
+    for name in names:
+        assert bus.services[f"{MANAGER}/load_controller"](LoadControllerRequest(name)).ok, \
+            bus.warnings
+    request = SwitchControllerRequest(start_controllers=list(names), strictness=2)
+    assert bus.services[f"{MANAGER}/switch_controller"](request).ok, bus.warnings
+
+
+def goal_to(positions, seconds, joints=("pan", "lift")):
+    trajectory = JointTrajectory(joint_names=list(joints), points=[JointTrajectoryPoint(
+        positions=list(positions), time_from_start=genpy.Duration(seconds))])
+    return FollowJointTrajectoryGoal(trajectory=trajectory)
+
+
+def angles(model, *joints):
+    return [model.robot.joint_position_velocity(j)[0] for j in joints]
+
+
+def test_position_joints_hold_before_any_controller():
+    world, bus, model = arm()
+    run(world, 1.0)
+    assert abs(angles(model, "lift")[0]) < 1e-3  # gravity would pull the arm down
+    world.close()
+
+
+def test_trajectory_goal_reaches_its_positions_within_a_hundredth_of_a_radian():
+    world, bus, model = arm()
+    start(bus, "joint_state_controller", "arm_controller")
+    handle = GoalHandle(goal_to([1.0, 0.5], 2.0))
+    on_goal, _ = bus.actions["/arm_bot/arm_controller/follow_joint_trajectory"]
+    on_goal(handle)
+    assert handle.status == "active"
+    run(world, 1.0)
+    assert 0.2 < angles(model, "pan")[0] < 0.8  # on its way, not there yet
+    run(world, 2.0)
+    assert handle.status == "succeeded", handle.result
+    assert angles(model, "pan", "lift") == pytest.approx([1.0, 0.5], abs=0.01)
+    assert handle.feedback and handle.feedback[-1].joint_names == ["pan", "lift"]
+    state = bus.last("/arm_bot/arm_controller/state")
+    assert state.desired.positions == pytest.approx([1.0, 0.5])
+    joint_states = bus.last("/arm_bot/joint_states")
+    assert joint_states.name == ["pan", "lift", "finger_joint"]  # the prismatic one too
+    world.close()
+
+
+def test_bad_goals_are_refused_with_the_reason():
+    world, bus, model = arm()
+    start(bus, "arm_controller")
+    on_goal, _ = bus.actions["/arm_bot/arm_controller/follow_joint_trajectory"]
+    wrong = GoalHandle(goal_to([1.0], 1.0, joints=("elbow",)))
+    on_goal(wrong)
+    assert wrong.status == "rejected"
+    assert wrong.result.error_code == FollowJointTrajectoryResult.INVALID_JOINTS
+    nan = GoalHandle(goal_to([math.nan, 0.0], 1.0))
+    on_goal(nan)
+    assert nan.result.error_code == FollowJointTrajectoryResult.INVALID_GOAL
+    assert "not finite" in nan.result.error_string
+    run(world, 0.5)
+    assert abs(angles(model, "pan")[0]) < 1e-3  # nothing moved
+    world.close()
+
+
+def test_command_topic_and_a_new_goal_cancels_the_old():
+    world, bus, model = arm()
+    start(bus, "arm_controller")
+    on_goal, _ = bus.actions["/arm_bot/arm_controller/follow_joint_trajectory"]
+    first = GoalHandle(goal_to([1.0, 0.0], 3.0))
+    on_goal(first)
+    run(world, 0.5)
+    bus.subscriptions["/arm_bot/arm_controller/command"](goal_to([-0.5, 0.2], 1.0).trajectory)
+    run(world, 2.0)
+    assert first.status == "canceled"
+    assert angles(model, "pan", "lift") == pytest.approx([-0.5, 0.2], abs=0.01)
+    world.close()
+
+
+def test_joint_position_controller_moves_the_prismatic_finger():
+    world, bus, model = arm()
+    start(bus, "finger_controller")
+    bus.subscriptions["/arm_bot/finger_controller/command"](Float64(0.02))
+    run(world, 1.0)
+    assert angles(model, "finger_joint")[0] == pytest.approx(0.02, abs=1e-3)
+    bus.subscriptions["/arm_bot/finger_controller/command"](Float64(math.inf))
+    assert any("finite" in w for w in bus.warnings)
+    world.close()
+
+
+def test_effort_trajectory_controller_reaches_its_goal_through_pid():
+    world, bus, model = arm("EffortJointInterface")
+    start(bus, "effort_arm_controller")
+    on_goal, _ = bus.actions["/arm_bot/effort_arm_controller/follow_joint_trajectory"]
+    handle = GoalHandle(goal_to([0.8, 0.4], 2.0))
+    on_goal(handle)
+    run(world, 4.0)
+    assert handle.status == "succeeded"
+    assert angles(model, "pan", "lift") == pytest.approx([0.8, 0.4], abs=0.02)
+    world.close()
+
+
+def test_manager_refuses_what_it_cannot_do_and_lists_the_rest():
+    world, bus, model = arm()
+    load = bus.services[f"{MANAGER}/load_controller"]
+    assert not load(LoadControllerRequest("no_such_controller")).ok
+    assert any("/arm_bot/no_such_controller/type" in w for w in bus.warnings)
+    # an effort controller on position joints
+    assert not load(LoadControllerRequest("effort_arm_controller")).ok
+    assert any("EffortJointInterface" in w for w in bus.warnings)
+    start(bus, "arm_controller")
+    assert not bus.services[f"{MANAGER}/unload_controller"](
+        UnloadControllerRequest("arm_controller")).ok  # running
+    listed = bus.services[f"{MANAGER}/list_controllers"](ListControllersRequest()).controller
+    assert [(c.name, c.state, c.type) for c in listed] == [
+        ("arm_controller", "running", "position_controllers/JointTrajectoryController")]
+    assert listed[0].claimed_resources[0].resources == ["pan", "lift"]
+    world.close()
