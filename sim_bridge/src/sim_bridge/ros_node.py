@@ -317,17 +317,10 @@ class SimBridgeNode:
         return SetModelStateResponse(True, "SetModelState: set model state done")
 
     def _set_configuration(self, request):
-        model = self.world.model(request.model_name)
-        if model.robot is None:
-            raise SimError(f"model '{request.model_name}' has no joints")
         if len(request.joint_names) != len(request.joint_positions):
             raise SimError("joint_names and joint_positions differ in length")
-        unknown = [j for j in request.joint_names if j not in model.robot.joint_index]
-        if unknown:
-            raise SimError(f"model '{request.model_name}' has no joint(s) {', '.join(unknown)}")
-        positions = dict(zip(request.joint_names, request.joint_positions))
-        model.robot.reset_joints(positions)
-        model.initial_joints.update(positions)
+        self.world.set_joint_positions(request.model_name,
+                                       dict(zip(request.joint_names, request.joint_positions)))
         return SetModelConfigurationResponse(True, "SetModelConfiguration: success")
 
     def _world_properties(self, _request):

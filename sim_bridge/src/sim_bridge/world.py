@@ -376,6 +376,23 @@ class World:
             pb.resetBaseVelocity(model.body, list(linear), list(angular),
                                  physicsClientId=self.client)
 
+    def set_joint_positions(self, name: str, positions: Mapping[str, float]) -> None:
+        """Puts a robot's joints at positions (they become its reset positions too); its
+        plugins start over from there (position controllers hold the new pose)."""
+        model = self.model(name)
+        if model.robot is None:
+            raise SimError(f"model '{name}' has no joints")
+        unknown = [j for j in positions if j not in model.robot.joint_index]
+        if unknown:
+            raise SimError(f"model '{name}' has no joint(s) {', '.join(unknown)}")
+        for joint, value in positions.items():
+            if not math.isfinite(value):
+                raise SimError(f"joint '{joint}': position {value} is not finite")
+        model.robot.reset_joints(positions)
+        model.initial_joints.update(positions)
+        for plugin in model.plugins:
+            plugin.reset(self.now_ns)
+
     def reset(self) -> None:
         """Every model back where it was spawned, at rest; time goes on (never backwards)."""
         for model in self.models.values():

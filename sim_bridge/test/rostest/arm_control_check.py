@@ -47,6 +47,11 @@ class ArmControl(unittest.TestCase):
         self.sim.wait_sim_time(self.sim.sim_time() + 0.1)  # a fresh joint_states message
         return self.joints.position[self.joints.name.index(joint)]
 
+    def test_0_spawned_with_the_given_joint_positions_and_holding_them(self):
+        self.sim.wait_sim_time(self.sim.sim_time() + 0.5)
+        self.assertAlmostEqual(self.position("pan"), -0.2, delta=0.01)
+        self.assertAlmostEqual(self.position("lift"), 0.3, delta=0.01)
+
     def test_1_action_goal_is_reached(self):
         self.client.send_goal(FollowJointTrajectoryGoal(trajectory=trajectory([1.2, -0.6], 2.0)))
         self.assertTrue(self.client.wait_for_result(rospy.Duration(TIMEOUT)))

@@ -194,9 +194,10 @@ class RosControl(Plugin):
         self.hardware.write()
 
     def reset(self, now_ns: int) -> None:
+        """After a reset or new joint positions: hold there, controllers start over."""
         self.now_ns = now_ns
         self.rate.reset(now_ns)
-        self.hardware.read()
+        self.hardware.hold()
         for loaded in self.controllers.values():
             if loaded.state == "running":
                 loaded.controller.start(now_ns)

@@ -67,6 +67,11 @@ class RobotHardware:
         self.positions = np.zeros(len(self.names))
         self.velocities = np.zeros(len(self.names))
         self.efforts = np.zeros(len(self.names))
+        self.hold()
+
+    def hold(self) -> None:
+        """DefaultRobotHWSim's resting commands: position joints where they are, velocity
+        joints still, effort joints free."""
         self.read()
         for position, handle in zip(self.positions, self.joints.values()):
             handle.command = float(position) if handle.interface == "position" else 0.0
