@@ -6,7 +6,8 @@ Used by ``make demo`` and by the end-to-end tests in ``test/``:
 - :func:`private_master` picks a free port, so a run never meets another run's roscore;
 - :func:`roslaunch` starts a launch file with a log file and stops it (and its children);
 - :func:`stable_screenshot` waits until a window is drawn and its picture stops changing;
-- :func:`dark_pixels` and :func:`differing_pixels` measure screenshots with ImageMagick.
+- :func:`dark_pixels`, :func:`differing_pixels` and :func:`pixels_near` measure
+  screenshots with ImageMagick.
 
 Every wait has a timeout and says what it was waiting for when it runs out.
 """
@@ -153,6 +154,15 @@ def dark_pixels(path: str, threshold: str = "15%") -> int:
     """How many pixels are darker than ``threshold`` of full brightness."""
     result = subprocess.run(["convert", path, "-colorspace", "Gray", "-threshold", threshold,
                              "-negate", "-format", "%[fx:round(mean*w*h)]", "info:"],
+                            capture_output=True, text=True, check=True)
+    return int(result.stdout.strip())
+
+
+def pixels_near(path: str, colour: str, fuzz: str = "15%") -> int:
+    """How many pixels are within ``fuzz`` of ``colour`` (an ImageMagick colour)."""
+    result = subprocess.run(["convert", path, "-fuzz", fuzz, "-fill", "black", "+opaque", colour,
+                             "-fill", "white", "-opaque", colour, "-colorspace", "Gray",
+                             "-format", "%[fx:round(mean*w*h)]", "info:"],
                             capture_output=True, text=True, check=True)
     return int(result.stdout.strip())
 

@@ -87,6 +87,8 @@ class World:
         self.bus = bus
         self.gui = gui
         self.client = pb.connect(pb.GUI if gui else pb.DIRECT)
+        if gui:  # the world alone: no debug panels, no camera previews
+            pb.configureDebugVisualizer(pb.COV_ENABLE_GUI, 0, physicsClientId=self.client)
         self.seed = seed
         self.rng = np.random.default_rng(seed)
         self.ray_threads = ray_threads
