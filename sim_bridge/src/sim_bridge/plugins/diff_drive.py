@@ -36,11 +36,7 @@ class DiffDrive(DriveBase):
                          spec.text("odometryTopic", "odom"))
         self.left_joint = self.joint("leftJoint", "left_joint")
         self.right_joint = self.joint("rightJoint", "right_joint")
-        self.separation = self.number("wheelSeparation", 0.34)
-        self.radius = self.number("wheelDiameter", 0.15) / 2.0
-        if self.separation <= 0 or self.radius <= 0:
-            raise PluginError(f"plugin '{spec.name}': wheelSeparation and wheelDiameter must "
-                              "be positive")
+        self.separation, self.radius = self.wheel_geometry(0.34, 0.15)
         self.torque = self.number("wheelTorque", 5.0)
         self.acceleration = self.number("wheelAcceleration", 0.0)
         self.publish_tf = self.flag("publishTf", True)

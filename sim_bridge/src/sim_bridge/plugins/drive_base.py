@@ -12,7 +12,7 @@ from typing import Sequence, Tuple
 from geometry_msgs.msg import TransformStamped, Twist
 from nav_msgs.msg import Odometry
 
-from sim_bridge.plugins.base import Plugin, stamp
+from sim_bridge.plugins.base import Plugin, PluginError, stamp
 from sim_bridge.poses import yaw_from_quaternion
 
 
@@ -33,6 +33,23 @@ class DriveBase(Plugin):
         self.command: Tuple[float, float] = (0.0, 0.0)
         self.odom_out = context.bus.publisher(self.topic(odometry_topic), Odometry, queue_size=1)
         self._subscription = context.bus.subscriber(self.command_topic, Twist, self._on_command)
+
+    def wheel_geometry(self, separation_default: float, diameter_default: float):
+        """(wheelSeparation, wheel radius) from the plugin, both checked positive."""
+        separation = self.number("wheelSeparation", separation_default)
+        radius = self.number("wheelDiameter", diameter_default) / 2.0
+        if separation <= 0 or radius <= 0:
+            raise PluginError(f"plugin '{self.spec.name}': wheelSeparation and wheelDiameter "
+                              "must be positive")
+        return separation, radius
+
+    def publish_world_odometry(self, now_ns: int, covariance_matrix: list, with_tf: bool) -> None:
+        """The true pose as odometry (Gazebo's "world" source), and as TF when asked."""
+        odometry = self.odometry_message(now_ns, *self.world_odometry(), covariance_matrix,
+                                         covariance_matrix)
+        self.odom_out.publish(odometry)
+        if with_tf:
+            self.context.bus.send_transforms([self.odometry_transform(odometry)])
 
     def _on_command(self, message: Twist) -> None:
         """rospy's thread: checks and stores the command, nothing else."""

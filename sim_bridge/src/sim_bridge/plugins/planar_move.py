@@ -56,13 +56,8 @@ class PlanarMove(DriveBase):
                              physicsClientId=self.context.client)
 
     def after_step(self, now_ns: int) -> None:
-        if not self.rate.due(now_ns):
-            return
-        odometry = self.odometry_message(now_ns, *self.world_odometry(), self.covariance,
-                                         self.covariance)
-        self.odom_out.publish(odometry)
-        if self.publish_tf:
-            self.context.bus.send_transforms([self.odometry_transform(odometry)])
+        if self.rate.due(now_ns):
+            self.publish_world_odometry(now_ns, self.covariance, self.publish_tf)
 
     def reset(self, now_ns: int) -> None:
         super().reset(now_ns)

@@ -17,7 +17,7 @@ from __future__ import annotations
 import pybullet as pb
 
 from sim_bridge.drive_kinematics import wheel_speeds
-from sim_bridge.plugins.base import PluginError, Rate
+from sim_bridge.plugins.base import Rate
 from sim_bridge.plugins.drive_base import DriveBase, covariance
 
 
@@ -29,11 +29,7 @@ class SkidSteer(DriveBase):
                      self.joint("leftRearJoint", "left_rear_joint")]
         self.right = [self.joint("rightFrontJoint", "right_front_joint"),
                       self.joint("rightRearJoint", "right_rear_joint")]
-        self.separation = self.number("wheelSeparation", 0.4)
-        self.radius = self.number("wheelDiameter", 0.15) / 2.0
-        if self.separation <= 0 or self.radius <= 0:
-            raise PluginError(f"plugin '{spec.name}': wheelSeparation and wheelDiameter must "
-                              "be positive")
+        self.separation, self.radius = self.wheel_geometry(0.4, 0.15)
         self.torque = self.number("torque", 5.0)
         self.broadcast_tf = self.flag("broadcastTF", False)
         self.rate = Rate(self.number("updateRate", 100.0))
@@ -55,13 +51,8 @@ class SkidSteer(DriveBase):
             self.applied = targets
 
     def after_step(self, now_ns: int) -> None:
-        if not self.rate.due(now_ns):
-            return
-        odometry = self.odometry_message(now_ns, *self.world_odometry(), self.covariance,
-                                         self.covariance)
-        self.odom_out.publish(odometry)
-        if self.broadcast_tf:
-            self.context.bus.send_transforms([self.odometry_transform(odometry)])
+        if self.rate.due(now_ns):
+            self.publish_world_odometry(now_ns, self.covariance, self.broadcast_tf)
 
     def reset(self, now_ns: int) -> None:
         super().reset(now_ns)
