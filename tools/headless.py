@@ -132,7 +132,7 @@ def roslaunch(arguments: Sequence[str], env: Dict[str, str], log_path: str) -> I
 def window_mapped(display: str, title: str) -> bool:
     tree = subprocess.run(["xwininfo", "-display", display, "-root", "-tree"],
                           capture_output=True, text=True, check=False).stdout
-    return f'"{title}' in tree or title in tree
+    return title in tree
 
 
 def screenshot(display: str, path: str) -> str:

@@ -21,6 +21,8 @@ import time
 from dataclasses import dataclass
 from typing import Any, Callable, Dict
 
+import numpy as np
+import pybullet as pb
 import rospy
 from geometry_msgs.msg import Pose, Twist
 from rosgraph_msgs.msg import Clock
@@ -38,9 +40,6 @@ from sim_bridge.srv import (DeleteModel, DeleteModelResponse, GetModelState,
                             SpawnModel, SpawnModelResponse)
 from sim_bridge.world import SimError, World
 from urdf_tools.model import UrdfError
-
-import numpy as np
-import pybullet as pb
 
 # How long a service waits for the physics thread to take its request (wall seconds).
 REQUEST_TIMEOUT = 30.0

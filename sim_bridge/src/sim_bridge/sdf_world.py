@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from typing import List, Optional, Sequence, Tuple
 
 from sim_bridge.materials import gazebo_colour
+from sim_bridge.poses import compose6
 
 Pose6 = Tuple[float, float, float, float, float, float]
 ZERO_POSE: Pose6 = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
@@ -253,7 +254,6 @@ def _model(element: ET.Element, source: str, model_dir: str) -> ModelSpec:
 
 
 def _offset_links(model: ModelSpec) -> List[LinkSpec]:
-    from sim_bridge.poses import compose6
     return [LinkSpec(l.name, compose6(model.pose, l.pose), l.collisions, l.visuals, l.mass,
                      l.inertia, l.inertial_pose) for l in model.links]
 

@@ -15,7 +15,7 @@ from std_srvs.srv import Empty
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sim_checks import Simulator, wait_until  # noqa: E402
 
-from sim_bridge.msg import ModelState  # noqa: E402
+from sim_bridge.msg import ModelState, ModelStates  # noqa: E402
 from sim_bridge.poses import quaternion_from_rpy  # noqa: E402
 from sim_bridge.srv import DeleteModel, SetModelState, SpawnModel  # noqa: E402
 
@@ -67,6 +67,22 @@ class World(unittest.TestCase):
         self.sim.wait_sim_time(paused_at + 0.5)
         self.command.publish(Twist())
         self.assertGreater(self.clock[-1], paused_at)
+
+    def test_model_states_topic_is_the_ground_truth(self):
+        self.sim.pause()
+        states = []
+        subscriber = rospy.Subscriber("/gazebo/model_states", ModelStates, states.append)
+        self.sim.unpause()
+        wait_until(lambda: states, "a message on /gazebo/model_states")
+        self.sim.pause()  # the robot is at rest: the latest message and the truth agree
+        subscriber.unregister()
+        latest = states[-1]
+        self.assertIn("wall", latest.name)  # static models too, as Gazebo
+        index = latest.name.index("diff_bot")
+        x, y, _ = self.sim.truth("diff_bot")
+        self.assertAlmostEqual(latest.pose[index].position.x, x, delta=0.01)
+        self.assertAlmostEqual(latest.pose[index].position.y, y, delta=0.01)
+        self.sim.unpause()
 
     def test_set_and_get_model_state_and_reset(self):
         state = ModelState(model_name="diff_bot", pose=pose(0.5, -0.3, 0.7))

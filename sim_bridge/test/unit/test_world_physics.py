@@ -234,3 +234,30 @@ def test_planar_move_goes_sideways_and_ignores_nan(world, bus, gadget):
     assert any("linear.y=nan" in w for w in bus.warnings)
     odometry = bus.last("/odom")
     assert odometry.pose.pose.position.x == pytest.approx(end[0], abs=0.01)
+
+
+def test_a_link_without_gravity_floats(world):
+    floating = """<robot name="balloon"><link name="body">
+      <collision><geometry><sphere radius="0.1"/></geometry></collision>
+      <inertial><mass value="0.5"/><inertia ixx="0.002" ixy="0" ixz="0" iyy="0.002" iyz="0"
+        izz="0.002"/></inertial></link>
+      <gazebo reference="body"><gravity>false</gravity></gazebo></robot>"""
+    world.spawn_urdf("balloon", floating, (0, 0, 1.0))
+    world.spawn_urdf("stone", floating.replace("<gravity>false</gravity>", ""), (1, 0, 1.0))
+    run(world, 1.0)
+    assert world.pose("balloon")[0][2] == pytest.approx(1.0, abs=1e-3)
+    assert world.pose("stone")[0][2] < 0.2  # fell
+
+
+def test_mesh_scenery_is_solid_and_seen(world, tmp_path):
+    # a 1 m cube as an OBJ mesh, standing on the ground 3 m ahead
+    corners = [(x, y, z) for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (0.0, 1.0)]
+    faces = [(1, 2, 4, 3), (5, 7, 8, 6), (1, 5, 6, 2), (3, 4, 8, 7), (1, 3, 7, 5), (2, 6, 8, 4)]
+    mesh = tmp_path / "cube.obj"
+    mesh.write_text("".join(f"v {x} {y} {z}\n" for x, y, z in corners) +
+                    "".join("f " + " ".join(map(str, f)) + "\n" for f in faces))
+    world.add_sdf_model(ModelSpec("crate", True, pose=(3, 0, 0, 0, 0, 0), links=[LinkSpec(
+        "link", collisions=[ShapeSpec("mesh", filename=str(mesh))])]))
+    ahead = np.array([[1.0, 0.0, 0.0]])
+    assert world.cast_rays((0.0, 0.0, 0.5), ahead, 0.0, 10.0)[0] == pytest.approx(2.5, abs=0.01)
+    assert pb.rayTest((3, 0, 5), (3, 0, -1), physicsClientId=world.client)[0][0] >= 0
