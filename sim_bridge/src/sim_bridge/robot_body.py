@@ -9,9 +9,14 @@ pybullet differs from Gazebo in ways that matter here, and this module hides the
 - every joint gets a velocity motor that brakes it: motors are switched off, so passive
   joints (casters) turn freely; a joint's URDF ``friction`` becomes a braking motor of
   that force, which is how pybullet models joint friction;
-- pybullet's URDF importer pads every collision shape by a 1 mm margin, which makes a
-  5 cm wheel roll 2% too far per turn: primitive collision shapes are shrunk by it, so
-  that contacts happen at the URDF's own surfaces;
+- pybullet's URDF importer pads cylinders by a 1 mm collision margin (boxes and spheres
+  rest exactly: measured), which makes a 5 cm wheel roll 2% too far per turn: collision
+  cylinders are shrunk by it, so that contacts happen at the URDF's own surfaces;
+- pybullet's contacts are rigid: a robot on two wheels and two casters touching exactly
+  cannot share its weight among four points the way Gazebo's soft contacts do, and under
+  acceleration the casters take it all and the wheels slip. Frictionless sphere casters
+  (mu1 = mu2 = 0) are therefore made 1 mm smaller: the robot stands on its wheels and one
+  caster, as a real one does on a floor that is not perfectly flat;
 - ``package://`` mesh URIs are resolved to files (pybullet knows no ROS packages);
 - a root link named ``world`` fixes the robot to the world, as in Gazebo.
 """
@@ -33,8 +38,10 @@ from urdf_tools.model import RobotModel, UrdfError
 # enough to keep the solver well conditioned.
 NEGLIGIBLE_MASS = 1e-3
 NEGLIGIBLE_INERTIA = 1e-7
-# the collision margin pybullet's URDF importer adds around every shape (metres)
+# the collision margin pybullet's URDF importer adds around cylinders (metres)
 URDF_COLLISION_MARGIN = 0.001
+# how much smaller frictionless caster spheres are made (see the module's notes)
+CASTER_CLEARANCE = 0.001
 
 Vec3 = Tuple[float, float, float]
 Quat = Tuple[float, float, float, float]
@@ -56,26 +63,31 @@ def resolve_package_uri(uri: str, source: str) -> str:
 
 
 def _shrink_by_margin(geometry: ET.Element) -> None:
-    """Takes pybullet's collision margin off a primitive shape's size."""
+    """Takes pybullet's collision margin off a cylinder (the one shape it pads)."""
     margin = URDF_COLLISION_MARGIN
     for shape in geometry:
-        if shape.tag == "box":
-            sizes = [float(v) for v in shape.get("size", "").split()]
-            shape.set("size", " ".join(repr(max(v - 2 * margin, v / 2)) for v in sizes))
-        elif shape.tag in ("cylinder", "sphere"):
+        if shape.tag == "cylinder":
             radius = float(shape.get("radius", "0"))
+            length = float(shape.get("length", "0"))
             shape.set("radius", repr(max(radius - margin, radius / 2)))
-            if shape.tag == "cylinder":
-                length = float(shape.get("length", "0"))
-                shape.set("length", repr(max(length - 2 * margin, length / 2)))
+            shape.set("length", repr(max(length - 2 * margin, length / 2)))
 
 
-def prepare_urdf(xml: str, model: RobotModel, warn) -> str:
+def _is_caster(tags: GazeboTags, link: str) -> bool:
+    surface = tags.surfaces.get(link)
+    return surface is not None and surface.mu1 == 0.0 and surface.mu2 == 0.0
+
+
+def prepare_urdf(xml: str, model: RobotModel, tags: GazeboTags, warn) -> str:
     """The URDF text pybullet should load (see the module's notes)."""
     root = ET.fromstring(xml)
     for link in root.findall("link"):
+        caster = _is_caster(tags, link.get("name", ""))
         for geometry in link.findall("collision/geometry"):
             _shrink_by_margin(geometry)
+            for sphere in geometry.findall("sphere") if caster else ():
+                radius = float(sphere.get("radius", "0"))
+                sphere.set("radius", repr(max(radius - CASTER_CLEARANCE, radius / 2)))
         if link.find("inertial") is None:
             inertial = ET.SubElement(link, "inertial")
             ET.SubElement(inertial, "mass", value=str(NEGLIGIBLE_MASS))
@@ -104,7 +116,7 @@ class RobotBody:
                  position: Sequence[float], orientation: Sequence[float], warn):
         self.client = client
         self.model = model
-        prepared = prepare_urdf(xml, model, warn)
+        prepared = prepare_urdf(xml, model, tags, warn)
         flags = pb.URDF_USE_INERTIA_FROM_FILE
         if tags.self_collide or any(s.self_collide for s in tags.surfaces.values()):
             flags |= pb.URDF_USE_SELF_COLLISION | pb.URDF_USE_SELF_COLLISION_EXCLUDE_PARENT
