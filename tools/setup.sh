@@ -34,7 +34,7 @@ apt_packages=(
   libstd-msgs-dev libgeometry-msgs-dev libtrajectory-msgs-dev libactionlib-msgs-dev
   ros-robot-state-publisher joint-state-publisher joint-state-publisher-gui rviz
   liburdfdom-tools
-  xvfb xauth x11-utils imagemagick
+  xvfb xauth x11-utils xdotool imagemagick
   python3-venv python3-pip
 )
 missing=()

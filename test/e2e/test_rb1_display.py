@@ -3,6 +3,8 @@ import os
 import shutil
 import subprocess
 
+import yaml
+
 import headless
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -29,6 +31,32 @@ def test_rviz_draws_the_robot(screen_env, results_dir, repo):
     # keep the latest picture for the package's README when asked to
     if os.environ.get("UPDATE_DOC_IMAGES") == "1":
         shutil.copyfile(robot, os.path.join(repo, "my_rb1_description", "doc", "display.png"))
+
+
+def joint_positions(env):
+    """One /joint_states message, as ``rostopic echo`` (YAML) prints it: {name: position}."""
+    echo = subprocess.run(["rostopic", "echo", "-n", "1", "/joint_states"], env=env,
+                          capture_output=True, text=True, timeout=30, check=True).stdout
+    message = yaml.safe_load(echo.split("---")[0])
+    return dict(zip(message["name"], message["position"]))
+
+
+def test_display_launch_as_typed_wheels_follow_the_sliders(screen_env, results_dir):
+    display = screen_env["DISPLAY"]
+    log = os.path.join(results_dir, "display.log")
+    with headless.roslaunch(["my_rb1_description", "display.launch"], screen_env, log) as launch:
+        for title in ("RViz", "Joint State Publisher"):
+            headless.wait_until(lambda: headless.window_mapped(display, title)
+                                or not launch.running(), 90, f"the {title} window")
+            assert launch.running(), launch.output()[-2000:]
+        assert joint_positions(screen_env)["right_wheel_joint"] == 0.0
+        # drag the first slider (right_wheel_joint) to the right, as a user would; the
+        # slider's handle sits at (140, 57) in the GUI's window, which opens at (0, 0)
+        subprocess.run(["xdotool", "mousemove", "140", "57", "mousedown", "1",
+                        "mousemove", "240", "57", "mouseup", "1"], env=screen_env, check=True)
+        headless.wait_until(lambda: joint_positions(screen_env)["right_wheel_joint"] > 1.0, 30,
+                            "right_wheel_joint to follow its slider")
+        assert joint_positions(screen_env)["left_wheel_joint"] == 0.0
 
 
 def test_a_malformed_model_stops_the_launch_naming_file_and_error(ros_env, results_dir):

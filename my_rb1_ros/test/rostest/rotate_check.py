@@ -65,6 +65,8 @@ class RotateRobot(unittest.TestCase):
         self.assertTrue(answer.startswith("failure"), answer)
         self.assertIn("4000", answer)
         self.assertLess(abs(turned), 0.1)
+        x1, y1, _, _, _ = self.truth.pose()
+        self.assertLess(math.hypot(x1 - x0, y1 - y0), 0.005)
 
 
 if __name__ == "__main__":

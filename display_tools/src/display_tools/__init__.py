@@ -1,0 +1,1 @@
+"""Nodes that the robot packages' display launch files share."""
