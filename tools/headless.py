@@ -64,21 +64,26 @@ def private_master(ros_home: Optional[str] = None) -> Iterator[Dict[str, str]]:
 @contextlib.contextmanager
 def virtual_display(width: int = 1024, height: int = 768,
                     timeout: float = 20.0) -> Iterator[str]:
-    """Starts Xvfb on a free display number; yields the DISPLAY value."""
+    """Starts Xvfb on a display it picks itself (``-displayfd``: no race with another run
+    choosing the same number); yields the DISPLAY value."""
     if shutil.which("Xvfb") is None:
         raise RuntimeError("Xvfb is not installed; run 'make' to set up the workspace")
-    number = next(n for n in range(90, 200) if not os.path.exists(f"/tmp/.X11-unix/X{n}")
-                  and not os.path.exists(f"/tmp/.X{n}-lock"))
-    display = f":{number}"
+    read_end, write_end = os.pipe()
     server = subprocess.Popen(
-        ["Xvfb", display, "-screen", "0", f"{width}x{height}x24", "-nolisten", "tcp"],
-        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        ["Xvfb", "-displayfd", str(write_end), "-screen", "0", f"{width}x{height}x24",
+         "-nolisten", "tcp"], pass_fds=(write_end,), stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL)
+    os.close(write_end)
     try:
+        with os.fdopen(read_end) as announced:
+            number = wait_until(lambda: announced.readline().strip() or server.poll() is not None,
+                                timeout, "Xvfb to choose a display")
+        if server.poll() is not None or not str(number).isdigit():
+            raise RuntimeError(f"Xvfb exited with code {server.returncode}")
+        display = f":{number}"
         wait_until(lambda: subprocess.run(["xdpyinfo", "-display", display],
-                                          capture_output=True, check=False).returncode == 0
-                   or server.poll() is not None, timeout, f"Xvfb on {display}")
-        if server.poll() is not None:
-            raise RuntimeError(f"Xvfb on {display} exited with code {server.returncode}")
+                                          capture_output=True, check=False).returncode == 0,
+                   timeout, f"Xvfb on {display}")
         yield display
     finally:
         server.terminate()
