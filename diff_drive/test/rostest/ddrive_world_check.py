@@ -2,7 +2,6 @@
 """rostest node on ddrive.launch paused:=true: time stands still until unpaused; the world
 holds what it should; diff/odom agrees with the truth while the robot drives upright."""
 import math
-import time
 import unittest
 
 import rospy
@@ -14,19 +13,7 @@ from std_srvs.srv import Empty
 
 from sim_bridge.poses import quaternion_matrix
 from sim_bridge.srv import GetModelState, GetWorldProperties
-
-TIMEOUT = 60.0
-
-
-def wait_until(condition, what, timeout=TIMEOUT):
-    end = time.monotonic() + timeout
-    while not rospy.is_shutdown():
-        if condition():
-            return
-        if time.monotonic() > end:
-            raise AssertionError(f"timed out after {timeout:.0f} s waiting for {what}")
-        time.sleep(0.01)
-
+from sim_bridge.testing import TIMEOUT, wait_until
 
 class DdriveWorld(unittest.TestCase):
     @classmethod

@@ -1,27 +1,16 @@
 """Helpers for the RB1 rostests: the simulator's truth about the RB1, waits with timeouts."""
 import math
 import threading
-import time
 
 import rospy
 
 from sim_bridge.msg import ModelStates
 from sim_bridge.poses import rpy_from_quaternion
 from sim_bridge.srv import GetModelState, GetWorldProperties
+from sim_bridge.testing import TIMEOUT, wait_until  # noqa: F401 (the tests import them from here)
 
-TIMEOUT = 60.0  # wall seconds any one wait may take
 ROBOT = "my_rb1"
 START = (-5.0, 0.0)  # the start area's centre in the warehouse
-
-
-def wait_until(condition, what, timeout=TIMEOUT, interval=0.01):
-    end = time.monotonic() + timeout
-    while not rospy.is_shutdown():
-        if condition():
-            return
-        if time.monotonic() > end:
-            raise AssertionError(f"timed out after {timeout:.0f} s waiting for {what}")
-        time.sleep(interval)
 
 
 class Truth:

@@ -1,6 +1,5 @@
 """Helpers for sim_bridge's rostest nodes: ground truth from the simulator, driving, waiting."""
 import math
-import time
 
 import rospy
 from geometry_msgs.msg import Twist
@@ -8,8 +7,7 @@ from std_srvs.srv import Empty
 
 from sim_bridge.poses import yaw_from_quaternion
 from sim_bridge.srv import GetModelState, GetWorldProperties
-
-TIMEOUT = 30.0  # seconds of wall time any one wait may take
+from sim_bridge.testing import TIMEOUT, wait_until  # noqa: F401 (the tests import them from here)
 
 
 class Simulator:
@@ -39,17 +37,8 @@ class Simulator:
         return p.x, p.y, yaw_from_quaternion((q.x, q.y, q.z, q.w))
 
     def wait_sim_time(self, target):
-        wait_until(lambda: self.sim_time() >= target, f"simulated time {target:.2f} s", 0.001)
-
-
-def wait_until(condition, what, interval=0.01, timeout=TIMEOUT):
-    end = time.monotonic() + timeout
-    while not rospy.is_shutdown():
-        if condition():
-            return
-        if time.monotonic() > end:
-            raise AssertionError(f"timed out after {timeout:.0f} s waiting for {what}")
-        time.sleep(interval)
+        wait_until(lambda: self.sim_time() >= target, f"simulated time {target:.2f} s",
+                   interval=0.001)
 
 
 def drive(simulator, publisher, linear, angular, duration):
