@@ -1,0 +1,1 @@
+"""Driving any robot here from the keyboard, with teleop_twist_keyboard's keys."""
