@@ -24,6 +24,10 @@ import time
 from typing import Dict, Iterator, List, Optional, Sequence
 
 
+# rows at the bottom of the screen left out when waiting for a still picture
+STATUS_BAR_ROWS = 40
+
+
 class WaitTimeout(RuntimeError):
     """A condition did not come true in time; the message says which."""
 
@@ -146,13 +150,23 @@ def screenshot(display: str, path: str) -> str:
     return path
 
 
-def differing_pixels(first: str, second: str, fuzz: str = "3%") -> int:
-    """How many pixels differ between two images of the same size."""
+def differing_pixels(first: str, second: str, fuzz: str = "3%", ignore_bottom: int = 0) -> int:
+    """How many pixels differ between two images of the same size (leaving out the bottom
+    ``ignore_bottom`` rows)."""
+    if ignore_bottom:
+        first, second = (_without_bottom(path, ignore_bottom) for path in (first, second))
     result = subprocess.run(["compare", "-metric", "AE", "-fuzz", fuzz, first, second,
                              "null:"], capture_output=True, text=True, check=False)
     if result.returncode not in (0, 1):
         raise RuntimeError(f"compare failed: {result.stderr.strip()}")
     return int(float(result.stderr.split()[0]))
+
+
+def _without_bottom(path: str, rows: int) -> str:
+    cropped = path + ".cropped.png"
+    subprocess.run(["convert", path, "-gravity", "South", "-chop", f"0x{rows}", cropped],
+                   check=True, capture_output=True)
+    return cropped
 
 
 def dark_pixels(path: str, threshold: str = "15%") -> int:
@@ -192,11 +206,15 @@ def stable_screenshot(display: str, path: str, window_title: str, launch: Launch
         if not launch.running():
             raise RuntimeError(f"roslaunch exited early; see {launch.log_path}")
         screenshot(display, path)
-        same = same + 1 if differing_pixels(previous, path, fuzz="0%") == 0 else 0
+        # rviz's status bar shows a frame rate that changes when rendering is slow
+        same = same + 1 if differing_pixels(previous, path, fuzz="0%",
+                                            ignore_bottom=STATUS_BAR_ROWS) == 0 else 0
         shutil.copyfile(path, previous)
         return same >= settle
 
     remaining = max(10.0, timeout - (time.monotonic() - started))
     wait_until(settled, remaining, f"the picture on {display} to stop changing", 0.5)
-    os.remove(previous)
+    for leftover in (previous, previous + ".cropped.png", path + ".cropped.png"):
+        if os.path.exists(leftover):
+            os.remove(leftover)
     return path

@@ -18,6 +18,8 @@ PACKAGES = [os.path.dirname(p) for p in workspace_files("package.xml")]
 LAUNCH_FILES = [p for p in workspace_files("*.launch") + workspace_files("*.test")
                 if "/test/" not in p or p.endswith(".test")]
 URDF_FILES = workspace_files("*.urdf")
+# robot xacros (macro files live under inc/ and are not robots by themselves)
+XACRO_ROBOTS = [p for p in workspace_files("*.xacro") if f"{os.sep}inc{os.sep}" not in p]
 
 
 def run(command):
@@ -48,4 +50,14 @@ def test_roslaunch_check_passes(launch_file, tmp_path):
 @pytest.mark.parametrize("urdf", [p for p in URDF_FILES if "/e2e/data/" not in p])
 def test_check_urdf_passes(urdf):
     result = run(["check_urdf", urdf])
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
+@pytest.mark.parametrize("xacro_file", XACRO_ROBOTS)
+def test_check_urdf_passes_on_expanded_xacro(xacro_file, tmp_path):
+    expanded = run(["xacro", xacro_file])
+    assert expanded.returncode == 0, expanded.stderr
+    urdf = tmp_path / "expanded.urdf"
+    urdf.write_text(expanded.stdout)
+    result = run(["check_urdf", str(urdf)])
     assert result.returncode == 0, result.stdout + result.stderr
