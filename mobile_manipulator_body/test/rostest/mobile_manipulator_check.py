@@ -10,6 +10,7 @@ import rospy
 import rostest
 from controller_manager_msgs.srv import ListControllers
 from geometry_msgs.msg import Twist
+from nav_msgs.msg import Odometry
 from sensor_msgs.msg import JointState
 
 from sim_bridge.srv import GetModelState, GetWorldProperties
@@ -57,6 +58,8 @@ class MobileManipulator(unittest.TestCase):
             p = self.state("mobile_manipulator", "").pose.position
             return p.x, p.y
 
+        odometry = []
+        rospy.Subscriber("/robot_base_velocity_controller/odom", Odometry, odometry.append)
         start = position()
         command = rospy.Publisher("/robot_base_velocity_controller/cmd_vel", Twist, queue_size=1)
         forward = Twist()
@@ -68,7 +71,12 @@ class MobileManipulator(unittest.TestCase):
         timer.shutdown()
         command.publish(Twist())
         wait_until(lambda: self.world().sim_time > began + 4.5, "the base to stop")
-        self.assertAlmostEqual(math.dist(start, position()), 0.9, delta=0.045)
+        travelled = math.dist(start, position())
+        self.assertAlmostEqual(travelled, 0.9, delta=0.045)
+        # the controller's odometry says so too
+        wait_until(lambda: odometry, "odometry on /robot_base_velocity_controller/odom")
+        self.assertEqual(odometry[-1].header.frame_id, "odom")
+        self.assertAlmostEqual(odometry[-1].pose.pose.position.x, travelled, delta=0.05)
 
 
 if __name__ == "__main__":
