@@ -37,6 +37,23 @@ Vec3 = Tuple[float, float, float]
 Quat = Tuple[float, float, float, float]
 
 
+@dataclass(frozen=True)
+class RayShape:
+    """A moving model's collision shape as lasers see it: ``local`` places it in its link's
+    frame (``link`` None: the free body's frame)."""
+
+    link: Optional[str]
+    local: np.ndarray
+    kind: str
+    size: Optional[Sequence[float]] = None
+    radius: Optional[float] = None
+    length: Optional[float] = None
+
+    def placed(self, frame: np.ndarray) -> Primitive:
+        return primitive_for(self.kind, frame @ self.local, size=self.size, radius=self.radius,
+                             length=self.length)
+
+
 class SimError(ValueError):
     """A request the world cannot carry out; the message says why."""
 
@@ -58,7 +75,10 @@ class Model:
     position: Vec3 = (0.0, 0.0, 0.0)
     orientation: Quat = (0.0, 0.0, 0.0, 1.0)
     static_bodies: List[int] = field(default_factory=list)
-    primitives: list = field(default_factory=list)
+    primitives: List[Primitive] = field(default_factory=list)  # static: placed in the world
+    # moving models: their shapes for lasers, placed each scan from the bodies' poses
+    ray_shapes: List[RayShape] = field(default_factory=list)
+    has_mesh: bool = False
 
 
 def _finite(values: Sequence[float], what: str) -> None:
@@ -71,13 +91,6 @@ def pose_matrix(position: Sequence[float], orientation: Sequence[float]) -> np.n
     transform[:3, :3] = quaternion_matrix(orientation)
     transform[:3, 3] = position
     return transform
-
-
-def _primitive(shape: ShapeSpec, transform: np.ndarray) -> Optional[Primitive]:
-    if shape.kind == "mesh":
-        return None
-    return primitive_for(shape.kind, transform, size=shape.size, radius=shape.radius,
-                         length=shape.length)
 
 
 class World:
@@ -93,8 +106,10 @@ class World:
         self.rng = np.random.default_rng(seed)
         self.ray_threads = ray_threads
         self.models: Dict[str, Model] = {}
+        # derived from the models, rebuilt when they change (see _scene_changed)
         self._static_shapes: Optional[ShapeSet] = None
-        self._plugins: Optional[List[Plugin]] = None  # what step() calls; None: rebuild
+        self._plugins: Optional[List[Plugin]] = None  # what step() calls
+        self._has_meshes: Optional[bool] = None
         self._weightless: List[RobotBody] = []
         self.now_ns = 0
         self.paused = False
@@ -140,16 +155,24 @@ class World:
         pos, orn = pose6_to_position_quaternion(spec.pose)
         model = Model(spec.name, "static" if spec.static else "body", pos, orn, namespace, spec,
                       position=pos, orientation=orn)
+        model.has_mesh = any(s.kind == "mesh" for link in spec.links for s in link.collisions)
         if spec.static:
             self._create_static_bodies(model)
         else:
             model.body = self._free_body(spec)
-            model.primitives = [
-                (pose6_matrix(link.pose) @ pose6_matrix(shape.pose), shape)
-                for link in spec.links for shape in link.collisions]
+            model.ray_shapes = [
+                RayShape(None, pose6_matrix(link.pose) @ pose6_matrix(shape.pose), shape.kind,
+                         shape.size, shape.radius, shape.length)
+                for link in spec.links for shape in link.collisions if shape.kind != "mesh"]
         self.models[spec.name] = model
-        self._plugins = None
+        self._scene_changed()
         return model
+
+    def _scene_changed(self) -> None:
+        """Models came, went or moved: what is derived from them is rebuilt when next used."""
+        self._plugins = None
+        self._static_shapes = None
+        self._has_meshes = None
 
     def _shape_arguments(self, shape: ShapeSpec, collision: bool) -> dict:
         arguments: dict = {}
@@ -209,12 +232,14 @@ class World:
                     else min(shape.friction, WORLD_FRICTION)
                 pb.changeDynamics(body, -1, lateralFriction=friction, physicsClientId=self.client)
                 model.static_bodies.append(body)
-                model.primitives.append(_primitive(shape, pose6_matrix(pose)))
+                if shape.kind != "mesh":  # meshes: lasers ask pybullet (see cast_rays)
+                    model.primitives.append(primitive_for(
+                        shape.kind, pose6_matrix(pose), size=shape.size, radius=shape.radius,
+                        length=shape.length))
             for shape in visuals:
                 pose = compose6(link_pose, shape.pose)
                 model.static_bodies.append(self._fixed_body(-1, self._make_shape(shape, False),
                                                             pose))
-        self._static_shapes = None  # rebuilt on the next ray cast
 
     def _fixed_body(self, collision: int, visual: int, pose: Sequence[float]) -> int:
         position, orientation = pose6_to_position_quaternion(pose)
@@ -227,7 +252,6 @@ class World:
         for body in model.static_bodies:
             pb.removeBody(body, physicsClientId=self.client)
         model.static_bodies = []
-        self._static_shapes = None
 
     def _free_body(self, spec: ModelSpec) -> int:
         if len(spec.links) != 1:
@@ -315,8 +339,15 @@ class World:
         except Exception:
             robot.remove()
             raise
+        model.has_mesh = any(s.geometry.kind == "mesh" for link in description.links.values()
+                             for s in link.collisions)
+        model.ray_shapes = [
+            RayShape(link.name, origin_transform(shape.origin), shape.geometry.kind,
+                     shape.geometry.size, shape.geometry.radius, shape.geometry.length)
+            for link in description.links.values() for shape in link.collisions
+            if shape.geometry.kind != "mesh"]
         self.models[name] = model
-        self._plugins = None
+        self._scene_changed()
         return model
 
     # --- requests ------------------------------------------------------------------------
@@ -332,7 +363,7 @@ class World:
         for plugin in model.plugins:
             plugin.close()
         del self.models[name]
-        self._plugins = None
+        self._scene_changed()
         if model.kind == "static":
             self._remove_static_bodies(model)
         elif model.robot is not None:
@@ -373,6 +404,7 @@ class World:
             model.spec.pose = (*position, *roll_pitch_yaw)
             self._remove_static_bodies(model)
             self._create_static_bodies(model)
+            self._scene_changed()
         elif model.robot is not None:
             model.robot.set_base_state(position, orientation, linear, angular)
         else:
@@ -437,7 +469,9 @@ class World:
         primitive shapes; through pybullet when a mesh is in the scene."""
         origin = np.asarray(origin, dtype=float)
         starts = origin + directions * near
-        if self._scene_has_meshes():
+        if self._has_meshes is None:
+            self._has_meshes = any(m.has_mesh for m in self.models.values())
+        if self._has_meshes:
             ends = origin + directions * far
             results = pb.rayTestBatch(starts.tolist(), ends.tolist(),
                                       numThreads=self.ray_threads, physicsClientId=self.client)
@@ -445,43 +479,22 @@ class World:
             return near + fractions * (far - near)
         if self._static_shapes is None:
             self._static_shapes = ShapeSet([p for m in self.models.values()
-                                            if m.kind == "static" for p in m.primitives
-                                            if p is not None])
+                                            if m.kind == "static" for p in m.primitives])
         distances = near + cast([self._static_shapes, ShapeSet(self._moving_primitives())],
                                 starts, directions)
         return np.where(distances <= far, distances, np.inf)
 
-    def _scene_has_meshes(self) -> bool:
-        for model in self.models.values():
-            if model.robot is not None:
-                if any(s.geometry.kind == "mesh" for link in model.robot.model.links.values()
-                       for s in link.collisions):
-                    return True
-            elif model.spec is not None and any(
-                    s.kind == "mesh" for link in model.spec.links for s in link.collisions):
-                return True
-        return False
-
     def _moving_primitives(self) -> List[Primitive]:
         primitives: List[Primitive] = []
         for model in self.models.values():
-            if model.kind == "static":
-                continue
             if model.robot is not None:
-                for link_name, link in model.robot.model.links.items():
-                    if not link.collisions:
-                        continue
-                    link_transform = pose_matrix(*model.robot.link_pose(link_name))
-                    for shape in link.collisions:
-                        g = shape.geometry
-                        primitives.append(primitive_for(
-                            g.kind, link_transform @ origin_transform(shape.origin),
-                            size=g.size, radius=g.radius, length=g.length))
+                frames = {name: pose_matrix(*model.robot.link_pose(name))
+                          for name in {shape.link for shape in model.ray_shapes}}
+                primitives.extend(shape.placed(frames[shape.link]) for shape in model.ray_shapes)
             elif model.body is not None:
-                body_transform = pose_matrix(*pb.getBasePositionAndOrientation(
+                frame = pose_matrix(*pb.getBasePositionAndOrientation(
                     model.body, physicsClientId=self.client))
-                for local, shape in model.primitives:
-                    primitives.append(_primitive(shape, body_transform @ local))
+                primitives.extend(shape.placed(frame) for shape in model.ray_shapes)
         return primitives
 
     def close(self) -> None:
