@@ -9,9 +9,11 @@ pybullet differs from Gazebo in ways that matter here, and this module hides the
 - every joint gets a velocity motor that brakes it: motors are switched off, so passive
   joints (casters) turn freely; a joint's URDF ``friction`` becomes a braking motor of
   that force, which is how pybullet models joint friction;
-- pybullet's URDF importer pads cylinders by a 1 mm collision margin (boxes and spheres
-  rest exactly: measured), which makes a 5 cm wheel roll 2% too far per turn: collision
-  cylinders are shrunk by it, so that contacts happen at the URDF's own surfaces;
+- pybullet's URDF importer turns a collision cylinder into a convex hull of a polygon
+  (a wheel with flats) padded by a 1 mm margin, unless asked for its implicit cylinder.
+  The hull wheel rolled 2% too far per turn, and a flipping robot landing on two hull
+  wheels yawed 10-17 degrees per flip, always the same way; implicit cylinders (exact
+  size, no padding: measured) land straight within 1 degree;
 - pybullet's contacts are rigid: a robot on two wheels and two casters touching exactly
   cannot share its weight among four points the way Gazebo's soft contacts do, and under
   acceleration the casters take it all and the wheels slip. Frictionless sphere casters
@@ -38,8 +40,6 @@ from urdf_tools.model import RobotModel, UrdfError
 # enough to keep the solver well conditioned.
 NEGLIGIBLE_MASS = 1e-3
 NEGLIGIBLE_INERTIA = 1e-7
-# the collision margin pybullet's URDF importer adds around cylinders (metres)
-URDF_COLLISION_MARGIN = 0.001
 # how much smaller frictionless caster spheres are made (see the module's notes)
 CASTER_CLEARANCE = 0.001
 
@@ -62,17 +62,6 @@ def resolve_package_uri(uri: str, source: str) -> str:
                         "(is the workspace sourced?)") from None
 
 
-def _shrink_by_margin(geometry: ET.Element) -> None:
-    """Takes pybullet's collision margin off a cylinder (the one shape it pads)."""
-    margin = URDF_COLLISION_MARGIN
-    for shape in geometry:
-        if shape.tag == "cylinder":
-            radius = float(shape.get("radius", "0"))
-            length = float(shape.get("length", "0"))
-            shape.set("radius", repr(max(radius - margin, radius / 2)))
-            shape.set("length", repr(max(length - 2 * margin, length / 2)))
-
-
 def _is_caster(tags: GazeboTags, link: str) -> bool:
     surface = tags.surfaces.get(link)
     return surface is not None and surface.mu1 == 0.0 and surface.mu2 == 0.0
@@ -84,7 +73,6 @@ def prepare_urdf(xml: str, model: RobotModel, tags: GazeboTags, warn) -> str:
     for link in root.findall("link"):
         caster = _is_caster(tags, link.get("name", ""))
         for geometry in link.findall("collision/geometry"):
-            _shrink_by_margin(geometry)
             for sphere in geometry.findall("sphere") if caster else ():
                 radius = float(sphere.get("radius", "0"))
                 sphere.set("radius", repr(max(radius - CASTER_CLEARANCE, radius / 2)))
@@ -117,7 +105,7 @@ class RobotBody:
         self.client = client
         self.model = model
         prepared = prepare_urdf(xml, model, tags, warn)
-        flags = pb.URDF_USE_INERTIA_FROM_FILE
+        flags = pb.URDF_USE_INERTIA_FROM_FILE | pb.URDF_USE_IMPLICIT_CYLINDER
         if tags.self_collide or any(s.self_collide for s in tags.surfaces.values()):
             flags |= pb.URDF_USE_SELF_COLLISION | pb.URDF_USE_SELF_COLLISION_EXCLUDE_PARENT
         with tempfile.NamedTemporaryFile("w", suffix=".urdf", delete=False) as stream:

@@ -22,7 +22,7 @@ def test_a_robot_rests_on_its_wheels_where_spawned(world, diff_bot_xml):
     world.spawn_urdf("bot", diff_bot_xml(), (1.0, 2.0, 0.0))
     run(world, 1.0)
     (x, y, z), orientation = world.pose("bot")
-    # base_footprint is at the wheels' contact plane: pybullet's margin is compensated
+    # base_footprint is at the wheels' contact plane: the wheels are true cylinders
     assert (x, y) == pytest.approx((1.0, 2.0), abs=1e-3)
     assert abs(z) < 2e-4
 

@@ -1,0 +1,1 @@
+"""The flipping differential-drive robot's node logic (see flip)."""

@@ -1,0 +1,153 @@
+"""The flip routine: drive back and forth along a line by flipping over, never turning.
+
+Both wheels always get the same speed (``angular.z`` is always zero). The robot drives a
+leg at ``speed``, then the command reverses sign at once: the wheels' sudden reversal
+throws the body over its axle, it lands on its top caster and, because a pitch flip keeps
+the axle where it was, the reversed wheels now drive it back the way it came, wheels
+leading. Every leg ends in the next reversal and the next flip.
+
+Settings are private parameters (``~speed``, ``~leg_time``, ``~rate``); what is not set
+comes from the package's ``config/flip.yaml``, the one place the defaults live. The node
+starts once the robot's odometry (``diff/odom``) arrives, and counts the flips it sees
+there (the body's up axis changing sign) in its log.
+"""
+from __future__ import annotations
+
+import math
+import os
+import sys
+from dataclasses import dataclass, fields
+from typing import Mapping, Optional
+
+import rospkg
+import rospy
+import yaml
+from geometry_msgs.msg import Twist
+from nav_msgs.msg import Odometry
+
+
+@dataclass(frozen=True)
+class FlipSettings:
+    """How the routine drives: speed (m/s), leg_time (s), rate (Hz)."""
+
+    speed: float
+    leg_time: float
+    rate: float
+
+    @classmethod
+    def from_mapping(cls, values: Mapping[str, object], source: str) -> "FlipSettings":
+        """Settings from ``values``; ValueError naming ``source`` and the parameter when one
+        is missing or is not a positive finite number."""
+        read = {}
+        for field in fields(cls):
+            if field.name not in values:
+                raise ValueError(f"{source}: '{field.name}' is missing")
+            value = values[field.name]
+            if isinstance(value, bool) or not isinstance(value, (int, float)) \
+                    or not math.isfinite(value) or value <= 0:
+                raise ValueError(f"{source}: '{field.name}' must be a positive number "
+                                 f"(got {value!r})")
+            read[field.name] = float(value)
+        return cls(**read)
+
+
+def load_defaults(path: str) -> dict:
+    """The yaml of defaults as a dict (an empty or missing file: ValueError naming it)."""
+    try:
+        with open(path) as stream:
+            values = yaml.safe_load(stream)
+    except OSError as error:
+        raise ValueError(f"{path}: cannot read the flip defaults: {error.strerror}") from None
+    if not isinstance(values, dict):
+        raise ValueError(f"{path}: expected a mapping of flip settings")
+    return values
+
+
+def commanded_speed(settings: FlipSettings, elapsed: float) -> float:
+    """The wheels' ground speed ``elapsed`` seconds into the routine: +speed on even legs,
+    -speed on odd ones."""
+    leg = int(max(elapsed, 0.0) // settings.leg_time)
+    return settings.speed if leg % 2 == 0 else -settings.speed
+
+
+def up_axis_z(x: float, y: float, z: float, w: float) -> float:
+    """The world z component of the body's z axis, from its orientation quaternion:
+    positive upright, negative upside down."""
+    return 1.0 - 2.0 * (x * x + y * y)
+
+
+class FlipCounter:
+    """Counts sign changes of the body's up axis (readings near zero, on edge, are skipped)."""
+
+    def __init__(self, dead_band: float = 0.2):
+        self.dead_band = dead_band
+        self.flips = 0
+        self._side: Optional[bool] = None
+
+    def update(self, up_z: float) -> bool:
+        """Takes one reading; True when it completes a flip."""
+        if abs(up_z) < self.dead_band:
+            return False
+        side = up_z > 0
+        flipped = self._side is not None and side != self._side
+        self._side = side
+        self.flips += flipped
+        return flipped
+
+
+class FlipNode:
+    """Publishes the routine on ``diff/cmd_vel`` and counts flips on ``diff/odom``.
+    Nothing here talks to the master before :meth:`run`."""
+
+    def __init__(self, settings: FlipSettings):
+        self.settings = settings
+        self.counter = FlipCounter()
+        self._odometry_seen = False
+
+    def run(self) -> None:
+        self._command = rospy.Publisher("diff/cmd_vel", Twist, queue_size=1)
+        rospy.Subscriber("diff/odom", Odometry, self._on_odometry, queue_size=10)
+        rospy.on_shutdown(self._stop)
+        rospy.loginfo("flip: %.2f m/s legs of %.2f s, reversing at once, never turning",
+                      self.settings.speed, self.settings.leg_time)
+        rate = rospy.Rate(self.settings.rate)
+        rospy.loginfo("flip: waiting for the robot's odometry on %s",
+                      rospy.resolve_name("diff/odom"))
+        start = None  # the routine starts once the robot is there (its odometry arrives)
+        while not rospy.is_shutdown():
+            now = rospy.get_time()
+            if start is None and self._odometry_seen:
+                start = now
+            if start is not None:
+                twist = Twist()
+                twist.linear.x = commanded_speed(self.settings, now - start)
+                self._command.publish(twist)
+            try:
+                rate.sleep()
+            except rospy.exceptions.ROSTimeMovedBackwardsException:
+                start = None  # the world was reset: start the routine again
+            except rospy.exceptions.ROSInterruptException:
+                break
+
+    def _on_odometry(self, message: Odometry) -> None:
+        self._odometry_seen = True
+        q = message.pose.pose.orientation
+        if self.counter.update(up_axis_z(q.x, q.y, q.z, q.w)):
+            rospy.loginfo("flip: flipped over (%d so far)", self.counter.flips)
+
+    def _stop(self) -> None:
+        self._command.publish(Twist())
+
+
+def main(argv=None) -> None:
+    rospy.init_node("flip", argv=argv)
+    defaults_path = os.path.join(rospkg.RosPack().get_path("diff_drive"), "config", "flip.yaml")
+    try:
+        values = load_defaults(defaults_path)
+        values.update({field.name: rospy.get_param("~" + field.name)
+                       for field in fields(FlipSettings) if rospy.has_param("~" + field.name)})
+        settings = FlipSettings.from_mapping(values, rospy.resolve_name("~"))
+    except ValueError as error:
+        rospy.logfatal("flip: %s", error)
+        sys.exit(2)
+    FlipNode(settings).run()
