@@ -1,0 +1,5 @@
+"""Installs the arm_move Python package (catkin_python_setup)."""
+from catkin_pkg.python_setup import generate_distutils_setup
+from setuptools import setup
+
+setup(**generate_distutils_setup(packages=["arm_move"], package_dir={"": "src"}))

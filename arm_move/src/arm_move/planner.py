@@ -1,0 +1,275 @@
+"""Planning for the arm: a position target to a timed joint trajectory, or a MoveIt error
+code saying why not.
+
+In order: the target must be finite and above the floor (else INVALID_GOAL_CONSTRAINTS);
+the start must be within limits and free (INVALID_ROBOT_STATE, START_STATE_IN_COLLISION);
+inverse kinematics over a fan of gripper pitches, the preferred one first, must give
+solutions within limits (NO_IK_SOLUTION) of which some are free (GOAL_IN_COLLISION);
+RRTConnect (OMPL) searches joint space from the start to any of the best free solutions
+within the time allowed (TIMED_OUT, PLANNING_FAILED) unless a straight line is free; every
+motion is checked densely (all states no more than ``resolution`` apart in every joint,
+in batches); the path is shortened greedily; then each straight segment gets a trapezoidal speed profile within the joint
+speed and acceleration limits. The random numbers are OMPL's, seeded per plan from
+``seed``: the same request from the same state gives the same path.
+"""
+from __future__ import annotations
+
+import math
+import time
+from collections import Counter
+from dataclasses import dataclass, field
+from typing import List, Optional, Sequence
+
+import numpy as np
+from ompl import base as ob
+from ompl import geometric as og
+from ompl import util as ou
+
+from arm_move.collision import ArmCollisionModel, Scene
+from arm_move.kinematics import ArmKinematics
+from arm_move.msg import MoveItErrorCodes as Codes
+
+ou.setLogLevel(ou.LOG_WARN)
+
+
+@dataclass(frozen=True)
+class PlannerSettings:
+    """From config/mover.yaml (units in its comments)."""
+
+    planning_time: float = 1.0
+    resolution_degrees: float = 1.0
+    pitch_step_degrees: float = 5.0
+    preferred_pitch_degrees: float = 90.0
+    goal_count: int = 6
+    velocity_scaling: float = 0.5
+    acceleration: float = 6.0
+    sample_period: float = 0.05
+    seed: int = 1
+
+
+@dataclass
+class Plan:
+    """What planning gave: a MoveIt code and message; on success the path (joint vertices)
+    and the timed trajectory (times, positions, velocities)."""
+
+    code: int
+    message: str
+    path: List[np.ndarray] = field(default_factory=list)
+    times: List[float] = field(default_factory=list)
+    positions: List[np.ndarray] = field(default_factory=list)
+    velocities: List[np.ndarray] = field(default_factory=list)
+    planning_seconds: float = 0.0
+
+    @property
+    def ok(self) -> bool:
+        return self.code == Codes.SUCCESS
+
+
+class _BatchMotionValidator(ob.MotionValidator):
+    """OMPL asks whether a straight motion is free; this checks all its states at once."""
+
+    def __init__(self, information, planner: "ArmPlanner", finger: float, scene: Scene):
+        super().__init__(information)
+        self._planner, self._finger, self._scene = planner, finger, scene
+
+    def checkMotion(self, first, second, *_):
+        a = np.array([first[i] for i in range(4)])
+        b = np.array([second[i] for i in range(4)])
+        return self._planner.motion_free(a, b, self._finger, self._scene)
+
+
+class ArmPlanner:
+    def __init__(self, kinematics: ArmKinematics, model: ArmCollisionModel,
+                 settings: PlannerSettings = PlannerSettings()):
+        self.k = kinematics
+        self.model = model
+        self.settings = settings
+        self.resolution = math.radians(settings.resolution_degrees)
+        self._plans = 0
+
+    # --- checks ------------------------------------------------------------------------
+    def interpolate(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+        """States from a to b (both included), no joint moving more than the resolution
+        between two."""
+        count = max(1, int(math.ceil(np.max(np.abs(b - a)) / self.resolution)))
+        return a + np.linspace(0.0, 1.0, count + 1)[:, None] * (b - a)
+
+    def motion_free(self, a: np.ndarray, b: np.ndarray, finger: float, scene: Scene) -> bool:
+        return bool(np.all(self.model.valid(self.interpolate(a, b), finger, scene)))
+
+    def path_free(self, path: Sequence[np.ndarray], finger: float, scene: Scene) -> bool:
+        return all(self.motion_free(a, b, finger, scene) for a, b in zip(path, path[1:]))
+
+    def pitches(self) -> List[float]:
+        """The gripper pitches IK tries, the preferred first, then alternately either side."""
+        step = math.radians(self.settings.pitch_step_degrees)
+        preferred = math.radians(self.settings.preferred_pitch_degrees)
+        fan = [preferred]
+        for i in range(1, int(math.ceil(math.pi / step)) + 1):
+            fan += [preferred + i * step, preferred - i * step]
+        return [p for p in fan if -math.pi <= p - preferred <= math.pi]
+
+    # --- planning ----------------------------------------------------------------------
+    def plan_to_position(self, start: Sequence[float], finger: float,
+                         target: Sequence[float], scene: Scene) -> Plan:
+        began = time.perf_counter()
+        plan = self._plan_to_position(np.asarray(start, float), finger, target, scene)
+        plan.planning_seconds = time.perf_counter() - began
+        return plan
+
+    def plan_to_joints(self, start: Sequence[float], finger: float, goal: Sequence[float],
+                       scene: Scene) -> Plan:
+        began = time.perf_counter()
+        start, goal = np.asarray(start, float), np.asarray(goal, float)
+        plan = self._check_start(start, finger, scene)
+        if plan is None:
+            if not np.all(np.isfinite(goal)) or not self.k.within_limits(goal):
+                plan = Plan(Codes.INVALID_GOAL_CONSTRAINTS, f"goal {goal.round(3).tolist()} is "
+                            "outside the joint limits")
+            else:
+                hit = self.model.collision(goal, finger, scene)
+                plan = Plan(Codes.GOAL_IN_COLLISION, f"the goal touches {hit}") if hit \
+                    else self._search(start, [goal], finger, scene)
+        plan.planning_seconds = time.perf_counter() - began
+        return plan
+
+    def _check_start(self, start: np.ndarray, finger: float, scene: Scene) -> Optional[Plan]:
+        if not np.all(np.isfinite(start)) or not self.k.within_limits(start, slack=0.02):
+            return Plan(Codes.INVALID_ROBOT_STATE, f"the arm's state {start.round(3).tolist()} "
+                        "is outside its joint limits")
+        hit = self.model.collision(start, finger, scene)
+        if hit:
+            return Plan(Codes.START_STATE_IN_COLLISION, f"the arm already touches {hit}")
+        return None
+
+    def _plan_to_position(self, start, finger, target, scene) -> Plan:
+        target = np.asarray(target, dtype=float)
+        if target.shape != (3,) or not np.all(np.isfinite(target)):
+            return Plan(Codes.INVALID_GOAL_CONSTRAINTS, f"target {target.tolist()} is not a "
+                        "finite position")
+        if target[2] < scene.floor_z:
+            return Plan(Codes.INVALID_GOAL_CONSTRAINTS, f"target z {target[2]:.3f} m is below "
+                        f"the floor (z {scene.floor_z:.3f} m)")
+        inside = scene.containing(target)
+        if inside:
+            return Plan(Codes.GOAL_IN_COLLISION, f"target {target.round(3).tolist()} is inside "
+                        f"{inside}")
+        plan = self._check_start(start, finger, scene)
+        if plan is not None:
+            return plan
+        candidates = list(self.k.ik_candidates(target, self.pitches()))
+        if not candidates:
+            return Plan(Codes.NO_IK_SOLUTION, f"no joint solution within the limits puts the "
+                        f"gripper at {target.round(3).tolist()} (out of reach)")
+        goals = np.array(candidates)
+        free = self.model.valid(goals, finger, scene)
+        if not free.any():
+            hits = Counter(self.model.collision(q, finger, scene) for q in goals[:12])
+            what = ", ".join(f"{name}" for name, _ in hits.most_common())
+            return Plan(Codes.GOAL_IN_COLLISION, f"every joint solution for "
+                        f"{target.round(3).tolist()} touches something ({what})")
+        return self._search(start, list(goals[free][:self.settings.goal_count]), finger, scene)
+
+    def _search(self, start: np.ndarray, goals: List[np.ndarray], finger: float,
+                scene: Scene) -> Plan:
+        settings = self.settings
+        for goal in goals:  # the straight line first: most requests need nothing else
+            if self.motion_free(start, goal, finger, scene):
+                return self._timed([start, goal])
+        # every plan starts from the same seed (OMPL logs that sampling has started before)
+        ou.setLogLevel(ou.LOG_NONE)
+        ou.RNG.setSeed(settings.seed)
+        ou.setLogLevel(ou.LOG_WARN)
+        space = ob.RealVectorStateSpace(4)
+        bounds = ob.RealVectorBounds(4)
+        for i, (low, high) in enumerate(zip(self.k.lower, self.k.upper)):
+            bounds.setLow(i, low)
+            bounds.setHigh(i, high)
+        space.setBounds(bounds)
+        setup = og.SimpleSetup(space)
+        information = setup.getSpaceInformation()
+        model = self.model
+        setup.setStateValidityChecker(
+            lambda state: bool(model.valid(np.array([[state[i] for i in range(4)]]),
+                                           finger, scene)[0]))
+        validator = _BatchMotionValidator(information, self, finger, scene)
+        information.setMotionValidator(validator)
+        start_state = space.allocState()
+        for i in range(4):
+            start_state[i] = float(np.clip(start[i], self.k.lower[i], self.k.upper[i]))
+        setup.addStartState(start_state)
+        goal_states = ob.GoalStates(information)
+        for goal in goals:
+            state = space.allocState()
+            for i in range(4):
+                state[i] = float(goal[i])
+            goal_states.addState(state)
+        setup.setGoal(goal_states)
+        setup.setPlanner(og.RRTConnect(information))
+        status = setup.solve(settings.planning_time)
+        if not setup.haveExactSolutionPath():
+            if "TIMEOUT" in str(status).upper() or "timeout" in str(status).lower():
+                return Plan(Codes.TIMED_OUT, f"no path within {settings.planning_time} s")
+            return Plan(Codes.PLANNING_FAILED, f"the planner found no path ({status})")
+        solution = setup.getSolutionPath()
+        path = [np.array([solution.getState(j)[i] for i in range(4)])
+                for j in range(solution.getStateCount())]
+        path[0] = start
+        path = self.shortcut(path, finger, scene)
+        if not self.path_free(path, finger, scene):
+            return Plan(Codes.INVALID_MOTION_PLAN, "the shortened path failed the dense check")
+        return self._timed(path)
+
+    def shortcut(self, path: List[np.ndarray], finger: float, scene: Scene) -> List[np.ndarray]:
+        """Shortens a path greedily: from each kept vertex, straight to the farthest vertex
+        it can reach freely. Deterministic (unlike a time-limited random shortcutter)."""
+        kept, i = [path[0]], 0
+        while i < len(path) - 1:
+            j = len(path) - 1
+            while j > i + 1 and not self.motion_free(path[i], path[j], finger, scene):
+                j -= 1
+            kept.append(path[j])
+            i = j
+        return kept
+
+    # --- timing ------------------------------------------------------------------------
+    def _timed(self, path: List[np.ndarray]) -> Plan:
+        """Each straight segment with a trapezoidal profile (rest to rest), sampled every
+        ``sample_period``: no joint faster than velocity_scaling x the limit."""
+        settings = self.settings
+        speed = self.k.max_speed * settings.velocity_scaling
+        accel = settings.acceleration
+        plan = Plan(Codes.SUCCESS, "planned", path=path)
+        clock = 0.0
+        plan.times.append(0.0)
+        plan.positions.append(path[0].copy())
+        plan.velocities.append(np.zeros(4))
+        for a, b in zip(path, path[1:]):
+            delta = b - a
+            length = float(np.max(np.abs(delta)))
+            if length < 1e-9:
+                continue
+            direction = delta / length
+            ramp = speed / accel
+            if length < speed * ramp:  # never reaches full speed: a triangle
+                ramp = math.sqrt(length / accel)
+                top, cruise = accel * ramp, 0.0
+            else:
+                top, cruise = speed, (length - speed * ramp) / speed
+            duration = 2 * ramp + cruise
+            samples = max(2, int(math.ceil(duration / settings.sample_period)))
+            for t in np.linspace(0.0, duration, samples + 1)[1:]:
+                if t < ramp:
+                    s, v = 0.5 * accel * t * t, accel * t
+                elif t < ramp + cruise:
+                    s, v = 0.5 * top * ramp + top * (t - ramp), top
+                else:
+                    left = duration - t
+                    s, v = length - 0.5 * accel * left * left, accel * left
+                plan.times.append(clock + float(t))
+                plan.positions.append(a + direction * s)
+                plan.velocities.append(direction * v)
+            plan.positions[-1] = b.copy()
+            plan.velocities[-1] = np.zeros(4)
+            clock += duration
+        return plan
