@@ -3,7 +3,7 @@
 Tiers, in order (design.md, "Tests"):
   1. unit       pytest, no master:   <package>/test/unit/, test/unit/
   2. description pytest, no master:  <package>/test/description/, test/description/
-  3. rostest    a real master each:  <package>/test/rostest/*.test
+  3. rostest    a real master each:  <package>/test/rostest/*.test and <package>/test/*.test
   4. e2e        as a user types it:  test/e2e/
 
 Counts come from the JUnit XML every runner writes (under test_results/), so a test
@@ -90,11 +90,12 @@ def run_pytest(tier: str, paths: List[str], keyword: str) -> Tally:
 
 def run_rostests(keyword: str) -> Tally:
     tally = Tally()
-    test_files = sorted(glob.glob(os.path.join(REPO, "*", "test", "rostest", "*.test")))
+    test_files = sorted(glob.glob(os.path.join(REPO, "*", "test", "rostest", "*.test")) +
+                        glob.glob(os.path.join(REPO, "*", "test", "*.test")))
     if keyword:
         test_files = [f for f in test_files if keyword in os.path.basename(f)]
     for test_file in test_files:
-        package = os.path.basename(os.path.dirname(os.path.dirname(os.path.dirname(test_file))))
+        package = os.path.relpath(test_file, REPO).split(os.sep)[0]
         name = os.path.splitext(os.path.basename(test_file))[0]
         ros_home = os.path.join(RESULTS, "rostest", package, name)
         shutil.rmtree(ros_home, ignore_errors=True)

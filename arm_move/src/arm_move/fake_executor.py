@@ -1,0 +1,121 @@
+"""A kinematic stand-in for the arm's controllers, as MoveIt's fake controllers: no
+physics, the joints follow each trajectory exactly.
+
+In the arm's namespace it offers ``arm_controller/follow_joint_trajectory`` (waist,
+shoulder, elbow, wrist_angle) and ``gripper_controller/follow_joint_trajectory``
+(left_finger, right_finger), and publishes ``joint_states`` for all six at ``~rate``.
+The arm starts in the named pose ``~initial_pose`` (sleep), the gripper open. A goal with
+unknown joints, mismatched lengths or non-finite numbers is refused (INVALID_JOINTS /
+INVALID_GOAL); a new goal on a controller replaces the one running, which is preempted.
+Trajectories are sampled as the simulator's JointTrajectoryController samples them
+(sim_bridge.trajectory), on the ROS clock.
+"""
+from __future__ import annotations
+
+import math
+import os
+import sys
+import threading
+from typing import Dict, Sequence
+
+import actionlib
+import numpy as np
+import rospkg
+import rospy
+import yaml
+from control_msgs.msg import (FollowJointTrajectoryAction, FollowJointTrajectoryResult)
+from sensor_msgs.msg import JointState
+
+from arm_move.kinematics import ARM_JOINTS, FINGER_JOINTS
+from sim_bridge.trajectory import Trajectory, Waypoint
+
+Result = FollowJointTrajectoryResult
+
+
+class FakeController:
+    """One controller: its joints' positions, and the trajectory they follow."""
+
+    def __init__(self, name: str, joints: Sequence[str], positions: Dict[str, float],
+                 lock: threading.Lock, rate: float):
+        self.joints = list(joints)
+        self.positions = positions
+        self.lock = lock
+        self.rate = rate
+        self.server = actionlib.SimpleActionServer(f"{name}/follow_joint_trajectory",
+                                                   FollowJointTrajectoryAction,
+                                                   execute_cb=self._execute, auto_start=False)
+        self.server.start()
+
+    def _refuse(self, code: int, text: str) -> None:
+        rospy.logwarn("fake_executor: %s", text)
+        self.server.set_aborted(Result(error_code=code, error_string=text), text)
+
+    def _execute(self, goal) -> None:
+        trajectory = goal.trajectory
+        if sorted(trajectory.joint_names) != sorted(self.joints):
+            return self._refuse(Result.INVALID_JOINTS, f"joints {trajectory.joint_names} are "
+                                f"not this controller's {self.joints}")
+        order = [trajectory.joint_names.index(j) for j in self.joints]
+        points = []
+        for point in trajectory.points:
+            if len(point.positions) != len(self.joints) or \
+                    (point.velocities and len(point.velocities) != len(self.joints)):
+                return self._refuse(Result.INVALID_GOAL, "a point's lengths do not match the joints")
+            values = list(point.positions) + list(point.velocities)
+            if not all(math.isfinite(v) for v in values):
+                return self._refuse(Result.INVALID_GOAL, "a point is not finite")
+            points.append(Waypoint(point.time_from_start.to_sec(),
+                                   np.array([point.positions[i] for i in order]),
+                                   np.array([point.velocities[i] for i in order])
+                                   if point.velocities else None))
+        if not points:
+            return self.server.set_succeeded(Result(error_code=Result.SUCCESSFUL))
+        with self.lock:
+            start = np.array([self.positions[j] for j in self.joints])
+        plan = Trajectory(Waypoint(0.0, start, np.zeros(len(start))), points)
+        began = rospy.get_time()
+        rate = rospy.Rate(self.rate)
+        while not rospy.is_shutdown():
+            if self.server.is_preempt_requested():
+                self.server.set_preempted(Result(error_code=Result.SUCCESSFUL), "preempted")
+                return
+            elapsed = rospy.get_time() - began
+            positions, _, _ = plan.sample(elapsed)
+            with self.lock:
+                self.positions.update(zip(self.joints, map(float, positions)))
+            if elapsed >= plan.end_time:
+                break
+            rate.sleep()
+        self.server.set_succeeded(Result(error_code=Result.SUCCESSFUL))
+
+
+def main(argv=None) -> None:
+    rospy.init_node("fake_executor", argv=argv)
+    package = rospkg.RosPack().get_path("arm_move")
+    config_path = rospy.get_param("~robot_config", os.path.join(package, "config", "px100.yaml"))
+    pose_name = rospy.get_param("~initial_pose", "sleep")
+    rate = float(rospy.get_param("~rate", 50.0))
+    with open(config_path) as stream:
+        config = yaml.safe_load(stream)
+    if pose_name not in config["named_poses"] or not rate > 0:
+        rospy.logfatal("fake_executor: ~initial_pose must be one of %s and ~rate positive "
+                       "(got %r, %r)", sorted(config["named_poses"]), pose_name, rate)
+        sys.exit(1)
+    positions = dict(zip(ARM_JOINTS, map(float, config["named_poses"][pose_name])))
+    positions.update({j: float(config["finger"]["max"]) for j in FINGER_JOINTS})
+    lock = threading.Lock()
+    publisher = rospy.Publisher("joint_states", JointState, queue_size=10)
+    FakeController("arm_controller", ARM_JOINTS, positions, lock, rate)
+    FakeController("gripper_controller", FINGER_JOINTS, positions, lock, rate)
+    rospy.loginfo("fake_executor: joints follow trajectories exactly, starting at %s", pose_name)
+    ticker = rospy.Rate(rate)
+    names = list(ARM_JOINTS + FINGER_JOINTS)
+    while not rospy.is_shutdown():
+        with lock:
+            state = JointState(name=names, position=[positions[n] for n in names])
+        state.header.stamp = rospy.Time.now()
+        publisher.publish(state)
+        try:
+            ticker.sleep()
+        except rospy.ROSInterruptException:
+            break

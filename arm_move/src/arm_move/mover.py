@@ -1,0 +1,398 @@
+"""The ``mover`` node: reset, step and follow for the px100, with MoveIt's error codes.
+
+Runs in the arm's namespace (``px100``). At start-up it reads its settings once (private
+parameters from config/mover.yaml; the arm and scene from config/px100.yaml and
+config/scene.yaml unless ``~robot_config`` / ``~scene_config`` name others), adds the
+table to its planning scene and checks it is there, loads ``~waypoints`` (a list of
+``[x, y, z, gripper_open]``; none: empty), waits for the arm's joint states and for the
+two trajectory controllers' action servers (``arm_controller`` and ``gripper_controller``
+``/follow_joint_trajectory``, as the simulator's ros_control, the fake executor, or a
+real driver provide them) and only then offers its services:
+
+- ``reset`` (arm_move/Reset): places the RealSense box (planning scene, and the simulation
+  when ``/gazebo/set_model_state`` answers), then moves the arm to Home around it, gripper
+  open; ``clear_waypoints`` forgets the list.
+- ``step`` (arm_move/Step): plans the gripper point to a position; on SUCCESS appends
+  ``[x, y, z, gripper_open]`` to ``~waypoints`` and moves, then opens or closes the gripper.
+  On failure nothing moves and the list stays as it was; the code says why (see
+  arm_move.planner: below the floor or NaN → INVALID_GOAL_CONSTRAINTS, out of reach →
+  NO_IK_SOLUTION, inside an object → GOAL_IN_COLLISION...).
+- ``follow`` (arm_move/Follow): goes through the waypoints in order, once (the call returns
+  when done) or repeating in the background until ``reset`` or another ``follow``.
+  No waypoints: INVALID_MOTION_PLAN, nothing moves.
+
+A request while another runs is refused (FAILURE, "busy"). The scene and each planned
+path are published as markers (``planning_scene``, ``planned_path``).
+"""
+from __future__ import annotations
+
+import math
+import os
+import sys
+import threading
+from dataclasses import dataclass, fields
+from typing import List, Optional
+
+import actionlib
+import numpy as np
+import rospkg
+import rospy
+import yaml
+from control_msgs.msg import FollowJointTrajectoryAction, FollowJointTrajectoryGoal
+from sensor_msgs.msg import JointState
+from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
+from visualization_msgs.msg import Marker, MarkerArray
+
+from arm_move.collision import ArmCollisionModel, Box
+from arm_move.kinematics import ARM_JOINTS, FINGER_JOINTS, ArmKinematics
+from arm_move.markers import path_marker, scene_markers
+from arm_move.msg import MoveItErrorCodes as Codes
+from arm_move.planner import ArmPlanner, Plan, PlannerSettings
+from arm_move.scene_config import (REALSENSE_BOX, TABLE, empty_scene, quaternion_rotation,
+                                   table_box)
+from arm_move.srv import (Follow, FollowResponse, Reset, ResetResponse, Step, StepResponse)
+
+
+@dataclass(frozen=True)
+class MoverSettings:
+    """The mover's own settings (the planner's are PlannerSettings); see config/mover.yaml."""
+
+    planning_frame: str = "px100/base_link"
+    collision_padding: float = 0.005
+    action_timeout: float = 10.0
+    execution_margin: float = 5.0
+
+
+class Outcome(Exception):
+    """Ends a request early with a code and a message."""
+
+    def __init__(self, code: int, message: str):
+        super().__init__(message)
+        self.code, self.message = code, message
+
+
+def _read_yaml(path: str):
+    with open(path) as stream:
+        return yaml.safe_load(stream)
+
+
+def parse_waypoints(value) -> List[List[float]]:
+    """``~waypoints`` as [[x, y, z, open], ...]; ValueError naming the bad entry."""
+    if value is None:
+        return []
+    if not isinstance(value, list):
+        raise ValueError(f"~waypoints must be a list of [x, y, z, gripper_open], got {value!r}")
+    parsed = []
+    for index, entry in enumerate(value):
+        if not isinstance(entry, (list, tuple)) or len(entry) != 4:
+            raise ValueError(f"~waypoints[{index}] must be [x, y, z, gripper_open], got {entry!r}")
+        x, y, z, gripper_open = entry
+        numbers = [float(x), float(y), float(z)]
+        if not all(math.isfinite(n) for n in numbers):
+            raise ValueError(f"~waypoints[{index}] has a position that is not finite: {entry!r}")
+        parsed.append(numbers + [bool(gripper_open)])
+    return parsed
+
+
+class Mover:
+    def __init__(self, settings: MoverSettings, planner: ArmPlanner, scene_config: dict,
+                 waypoints: List[List[float]]):
+        self.settings = settings
+        self.planner = planner
+        self.k = planner.k
+        self.scene_config = scene_config
+        self.scene = empty_scene(scene_config)
+        self.waypoints = waypoints
+        self._busy = threading.Lock()
+        self._state_lock = threading.Lock()
+        self._positions = {}
+        self._cycle: Optional[threading.Thread] = None
+        self._stop_cycle = threading.Event()
+
+    # --- start-up ------------------------------------------------------------------------
+    def start(self) -> None:
+        frame = self.settings.planning_frame
+        self._scene_topic = rospy.Publisher("planning_scene", MarkerArray, queue_size=1,
+                                            latch=True)
+        self._path_topic = rospy.Publisher("planned_path", Marker, queue_size=1, latch=True)
+        self.scene.add(table_box(self.scene_config))
+        if TABLE not in self.scene.boxes:  # what MoveIt users do: check the object arrived
+            raise RuntimeError("the table did not reach the planning scene")
+        self._publish_scene()
+        rospy.loginfo("mover: planning scene has the %s (frame %s)", TABLE, frame)
+        rospy.Subscriber("joint_states", JointState, self._on_joint_states, queue_size=10)
+        timeout = self.settings.action_timeout
+        self.arm = actionlib.SimpleActionClient("arm_controller/follow_joint_trajectory",
+                                                FollowJointTrajectoryAction)
+        self.gripper = actionlib.SimpleActionClient("gripper_controller/follow_joint_trajectory",
+                                                    FollowJointTrajectoryAction)
+        for name, client in (("arm_controller", self.arm), ("gripper_controller", self.gripper)):
+            if not client.wait_for_server(rospy.Duration(timeout)):
+                raise RuntimeError(
+                    f"no driver answers on {rospy.resolve_name(name)}/follow_joint_trajectory "
+                    f"after {timeout:.0f} s. A driver must provide "
+                    f"{rospy.resolve_name('joint_states')} (sensor_msgs/JointState of "
+                    f"{', '.join(ARM_JOINTS + FINGER_JOINTS)}) and the control_msgs/"
+                    "FollowJointTrajectory actions arm_controller/follow_joint_trajectory "
+                    "(the four arm joints) and gripper_controller/follow_joint_trajectory "
+                    "(the fingers) in this namespace; or start arm.launch with use_sim:=true")
+        self._wait_for_joint_states(timeout)
+        rospy.Service("reset", Reset, self._serve_reset)
+        rospy.Service("step", Step, self._serve_step)
+        rospy.Service("follow", Follow, self._serve_follow)
+        rospy.loginfo("mover: ready, %d waypoints loaded", len(self.waypoints))
+
+    def _on_joint_states(self, message: JointState) -> None:
+        with self._state_lock:
+            self._positions.update(zip(message.name, message.position))
+
+    def _wait_for_joint_states(self, timeout: float) -> None:
+        deadline = rospy.get_time() + timeout
+        rate = rospy.Rate(20)
+        while not rospy.is_shutdown():
+            if all(name in self._positions for name in ARM_JOINTS + FINGER_JOINTS):
+                return
+            if rospy.get_time() > deadline:
+                break
+            rate.sleep()
+        raise RuntimeError(f"no joint states for {', '.join(ARM_JOINTS + FINGER_JOINTS)} on "
+                           f"{rospy.resolve_name('joint_states')} after {timeout:.0f} s")
+
+    def current(self):
+        with self._state_lock:
+            arm = np.array([self._positions[name] for name in ARM_JOINTS])
+            finger = float(np.mean([self._positions[name] for name in FINGER_JOINTS]))
+        return arm, finger
+
+    # --- services ------------------------------------------------------------------------
+    def _serve(self, handler, response_class, request, stops_cycle: bool):
+        if stops_cycle:
+            self._end_cycle()
+        if not self._busy.acquire(blocking=False):
+            return response_class(Codes(Codes.FAILURE), "busy: another request is running; "
+                                  "try again when it has finished")
+        try:
+            code, message = handler(request)
+        except Outcome as outcome:
+            code, message = outcome.code, outcome.message
+        finally:
+            self._busy.release()
+        (rospy.loginfo if code == Codes.SUCCESS else rospy.logwarn)("mover: %s", message)
+        return response_class(Codes(code), message)
+
+    def _serve_reset(self, request):
+        return self._serve(self._reset, ResetResponse, request, stops_cycle=True)
+
+    def _serve_step(self, request):
+        return self._serve(self._step, StepResponse, request, stops_cycle=False)
+
+    def _serve_follow(self, request):
+        return self._serve(self._follow, FollowResponse, request, stops_cycle=True)
+
+    # --- reset ---------------------------------------------------------------------------
+    def _reset(self, request):
+        pose = request.box_pose
+        position = np.array([pose.position.x, pose.position.y, pose.position.z])
+        if not np.all(np.isfinite(position)):
+            raise Outcome(Codes.INVALID_GOAL_CONSTRAINTS,
+                          f"reset: box position {position.tolist()} is not finite")
+        o = pose.orientation
+        try:
+            rotation = quaternion_rotation(o.x, o.y, o.z, o.w)
+        except ValueError as error:
+            raise Outcome(Codes.INVALID_GOAL_CONSTRAINTS, f"reset: box {error}") from None
+        size = self.scene_config[REALSENSE_BOX]["size"]
+        box = Box(REALSENSE_BOX, position, rotation, np.asarray(size, float))
+        trial = empty_scene(self.scene_config)
+        for other in self.scene.boxes.values():
+            if other.name != REALSENSE_BOX:
+                trial.add(other)
+        trial.add(box)
+        arm, finger = self.current()
+        plan = self.planner.plan_to_joints(arm, self.k.finger_max, self.k.named_poses["home"],
+                                           trial)
+        if plan.code == Codes.START_STATE_IN_COLLISION:
+            plan = Plan(plan.code, f"{plan.message} with the box there; the box was not moved")
+        self._require(plan, "reset")
+        self.scene = trial
+        self._publish_scene()
+        self._place_in_simulation(position, pose.orientation)
+        self._execute_gripper(self.k.finger_max)
+        self._execute(plan)
+        if request.clear_waypoints:
+            self.waypoints = []
+            rospy.set_param("~waypoints", [])
+        return Codes.SUCCESS, (f"reset: box at {position.round(3).tolist()}, arm at Home"
+                               f"{', waypoints cleared' if request.clear_waypoints else ''}")
+
+    def _place_in_simulation(self, position, orientation) -> None:
+        """Moves the simulated box too, when a simulator answers (not on the fake or the
+        real robot): its pose in the world is the arm's base frame raised by the table."""
+        try:
+            from sim_bridge.msg import ModelState
+            from sim_bridge.srv import SetModelState
+            rospy.wait_for_service("/gazebo/set_model_state", timeout=0.5)
+        except (ImportError, rospy.ROSException):
+            return
+        state = ModelState(model_name=REALSENSE_BOX, reference_frame="world")
+        state.pose.position.x, state.pose.position.y = position[0], position[1]
+        state.pose.position.z = position[2] + float(self.scene_config["table_height"])
+        state.pose.orientation = orientation
+        answer = rospy.ServiceProxy("/gazebo/set_model_state", SetModelState)(state)
+        if not answer.success:
+            rospy.logwarn("mover: the simulator did not move the box: %s", answer.status_message)
+
+    # --- step ----------------------------------------------------------------------------
+    def _step(self, request):
+        target = (request.position.x, request.position.y, request.position.z)
+        plan = self.move_to(target, request.gripper_open, "step")
+        waypoint = [float(v) for v in target] + [bool(request.gripper_open)]
+        self.waypoints.append(waypoint)
+        rospy.set_param("~waypoints", self.waypoints)
+        self._execute(plan)
+        self._execute_gripper(self._finger_for(request.gripper_open))
+        return Codes.SUCCESS, (f"step: gripper at {np.round(target, 3).tolist()}, "
+                               f"{'open' if request.gripper_open else 'closed'}; waypoint "
+                               f"{len(self.waypoints)} stored (planned in "
+                               f"{1000 * plan.planning_seconds:.0f} ms)")
+
+    def _finger_for(self, gripper_open: bool) -> float:
+        return self.k.finger_max if gripper_open else self.k.finger_min
+
+    def move_to(self, target, gripper_open: bool, what: str) -> Plan:
+        """Plans to a target; Outcome when it cannot be done (nothing has moved)."""
+        arm, finger = self.current()
+        plan = self.planner.plan_to_position(arm, finger, target, self.scene)
+        self._require(plan, what)
+        # the gripper opens or closes at the target: that must be free as well
+        hit = self.planner.model.collision(plan.path[-1], self._finger_for(gripper_open),
+                                           self.scene)
+        if hit:
+            raise Outcome(Codes.GOAL_IN_COLLISION, f"{what}: {'opening' if gripper_open else 'closing'}"
+                          f" the gripper at the target would touch {hit}")
+        self._publish_path(plan)
+        return plan
+
+    @staticmethod
+    def _require(plan: Plan, what: str) -> None:
+        if not plan.ok:
+            raise Outcome(plan.code, f"{what}: {plan.message}; nothing moved")
+
+    # --- follow --------------------------------------------------------------------------
+    def _follow(self, request):
+        if not self.waypoints:
+            raise Outcome(Codes.INVALID_MOTION_PLAN, "follow: there are no waypoints (add some "
+                          "with step, or load them into ~waypoints); nothing moved")
+        waypoints = [list(w) for w in self.waypoints]
+        if request.repeat:
+            self._stop_cycle.clear()
+            self._cycle = threading.Thread(target=self._repeat, args=(waypoints,), daemon=True)
+            self._cycle.start()
+            return Codes.SUCCESS, (f"follow: cycling through {len(waypoints)} waypoints until "
+                                   "reset or follow")
+        self._go_through(waypoints)
+        return Codes.SUCCESS, f"follow: went through {len(waypoints)} waypoints"
+
+    def _go_through(self, waypoints) -> None:
+        for index, (x, y, z, gripper_open) in enumerate(waypoints):
+            if self._stop_cycle.is_set():
+                raise Outcome(Codes.PREEMPTED, "follow: stopped")
+            try:
+                plan = self.move_to((x, y, z), gripper_open, f"follow, waypoint {index + 1}")
+            except Outcome as outcome:
+                raise Outcome(outcome.code, outcome.message.replace("; nothing moved", "")) from None
+            self._execute(plan)
+            self._execute_gripper(self._finger_for(gripper_open))
+
+    def _repeat(self, waypoints) -> None:
+        with self._busy:
+            while not self._stop_cycle.is_set() and not rospy.is_shutdown():
+                try:
+                    self._go_through(waypoints)
+                except Outcome as outcome:
+                    if outcome.code != Codes.PREEMPTED:
+                        rospy.logwarn("mover: the repeating follow stopped: %s", outcome.message)
+                    return
+
+    def _end_cycle(self) -> None:
+        if self._cycle is not None and self._cycle.is_alive():
+            self._stop_cycle.set()
+            self.arm.cancel_all_goals()
+            self.gripper.cancel_all_goals()
+            self._cycle.join(timeout=self.settings.action_timeout)
+        self._cycle = None
+
+    # --- execution -----------------------------------------------------------------------
+    def _execute(self, plan: Plan) -> None:
+        trajectory = JointTrajectory(joint_names=list(ARM_JOINTS))
+        for t, p, v in zip(plan.times, plan.positions, plan.velocities):
+            trajectory.points.append(JointTrajectoryPoint(
+                positions=[float(x) for x in p], velocities=[float(x) for x in v],
+                time_from_start=rospy.Duration(t)))
+        self._run(self.arm, trajectory, "the arm")
+
+    def _execute_gripper(self, opening: float) -> None:
+        _, finger = self.current()
+        duration = max(0.2, abs(opening - finger) / self.k.finger_speed)
+        trajectory = JointTrajectory(joint_names=list(FINGER_JOINTS))
+        trajectory.points.append(JointTrajectoryPoint(positions=[opening, opening],
+                                                      velocities=[0.0, 0.0],
+                                                      time_from_start=rospy.Duration(duration)))
+        self._run(self.gripper, trajectory, "the gripper")
+
+    def _run(self, client, trajectory: JointTrajectory, what: str) -> None:
+        if self._stop_cycle.is_set():
+            raise Outcome(Codes.PREEMPTED, "stopped")
+        goal = FollowJointTrajectoryGoal(trajectory=trajectory)
+        duration = trajectory.points[-1].time_from_start.to_sec()
+        client.send_goal(goal)
+        if not client.wait_for_result(rospy.Duration(duration + self.settings.execution_margin)):
+            client.cancel_goal()
+            raise Outcome(Codes.TIMED_OUT, f"{what} did not finish its motion within "
+                          f"{duration + self.settings.execution_margin:.1f} s")
+        if self._stop_cycle.is_set():
+            raise Outcome(Codes.PREEMPTED, "stopped")
+        result = client.get_result()
+        if result is None or result.error_code != 0:
+            detail = result.error_string if result is not None else "no result"
+            raise Outcome(Codes.CONTROL_FAILED, f"{what}'s controller failed: {detail}")
+
+    # --- markers -------------------------------------------------------------------------
+    def _publish_scene(self) -> None:
+        self._scene_topic.publish(scene_markers(self.scene, self.settings.planning_frame,
+                                                rospy.Time.now()))
+
+    def _publish_path(self, plan: Plan) -> None:
+        points = [self.k.gripper_point(q) for q in plan.positions]
+        self._path_topic.publish(path_marker(points, self.settings.planning_frame,
+                                             rospy.Time.now()))
+
+
+def _settings(cls, values):
+    known = {f.name for f in fields(cls)}
+    return cls(**{name: type(getattr(cls(), name))(value) for name, value in values.items()
+                  if name in known})
+
+
+def main(argv=None) -> None:
+    rospy.init_node("mover", argv=argv)
+    package = rospkg.RosPack().get_path("arm_move")
+    try:
+        values = _read_yaml(os.path.join(package, "config", "mover.yaml"))
+        values.update(rospy.get_param("~", {}))
+        robot = _read_yaml(rospy.get_param("~robot_config",
+                                           os.path.join(package, "config", "px100.yaml")))
+        scene_config = _read_yaml(rospy.get_param("~scene_config",
+                                                  os.path.join(package, "config", "scene.yaml")))
+        waypoints = parse_waypoints(rospy.get_param("~waypoints", None))
+        settings = _settings(MoverSettings, values)
+        kinematics = ArmKinematics.from_config(robot)
+        model = ArmCollisionModel(kinematics, robot["links"], robot["finger"],
+                                  settings.collision_padding, robot["self_collision_pairs"])
+        planner = ArmPlanner(kinematics, model, _settings(PlannerSettings, values))
+        mover = Mover(settings, planner, scene_config, waypoints)
+        mover.start()
+    except (ValueError, KeyError, OSError, RuntimeError) as error:
+        rospy.logfatal("mover: %s", error)
+        sys.exit(1)
+    rospy.spin()
