@@ -171,7 +171,6 @@ class ArmCollisionModel:
             pairs_i.extend(np.repeat(ia, len(ib)))
             pairs_j.extend(np.tile(ib, len(ia)))
         self._pi, self._pj = np.array(pairs_i, int), np.array(pairs_j, int)
-        self._pair_reach = (self.radii[self._pi] + self.radii[self._pj]) ** 2
         self._base_checked = np.nonzero(self._base_checked)[0]
         self._base_radii = self.radii[self._base_checked]
 
@@ -200,28 +199,32 @@ class ArmCollisionModel:
         return np.stack((planar[..., 0] * c - lateral * s, planar[..., 0] * s + lateral * c,
                          planar[..., 1]), axis=2)
 
-    def _self_collisions(self, centres: np.ndarray) -> np.ndarray:
+    def _self_collisions(self, centres: np.ndarray, margin: float = 0.0) -> np.ndarray:
         """Per configuration: whether the arm touches itself."""
         hit = np.zeros(len(centres), bool)
         if len(self._pi):
             gaps = centres[:, self._pi] - centres[:, self._pj]
-            hit |= np.any(np.einsum("mij,mij->mi", gaps, gaps) < self._pair_reach, axis=1)
+            reach = (self.radii[self._pi] + self.radii[self._pj] + 2 * margin) ** 2
+            hit |= np.any(np.einsum("mij,mij->mi", gaps, gaps) < reach, axis=1)
         box = self.base_box
         local = centres[:, self._base_checked] - box.center
         outside = np.maximum(np.abs(local) - box.size / 2, 0.0)
-        hit |= np.any(np.einsum("mij,mij->mi", outside, outside) < self._base_radii ** 2, axis=1)
+        hit |= np.any(np.einsum("mij,mij->mi", outside, outside) <
+                      (self._base_radii + margin) ** 2, axis=1)
         return hit
 
-    def valid(self, qs: np.ndarray, finger: float, scene: Scene) -> np.ndarray:
-        """Per configuration (m x 4): True where the arm touches neither itself nor the scene."""
+    def valid(self, qs: np.ndarray, finger: float, scene: Scene, margin: float = 0.0) -> np.ndarray:
+        """Per configuration (m x 4): True where the arm touches neither itself nor the scene
+        (``margin``: that much more clearance than the padding; negative: less)."""
         centres = self.centres(qs, finger)
-        bad = self._self_collisions(centres)
-        bad |= scene.hits(centres[:, self._moving], self._moving_radii)
+        bad = self._self_collisions(centres, margin)
+        bad |= scene.hits(centres[:, self._moving], self._moving_radii + margin)
         return ~bad
 
-    def collision(self, q: Sequence[float], finger: float, scene: Scene) -> Optional[str]:
+    def collision(self, q: Sequence[float], finger: float, scene: Scene,
+                  margin: float = 0.0) -> Optional[str]:
         """What the arm at ``q`` touches: "self", "floor", a scene object's name, or None."""
         centres = self.centres(np.asarray(q, dtype=float)[None, :], finger)
-        if self._self_collisions(centres)[0]:
+        if self._self_collisions(centres, margin)[0]:
             return "self"
-        return scene.first_hit(centres[0, self._moving], self._moving_radii)
+        return scene.first_hit(centres[0, self._moving], self._moving_radii + margin)

@@ -2,9 +2,10 @@
 code saying why not.
 
 In order: the target must be finite and above the floor (else INVALID_GOAL_CONSTRAINTS);
-the start must be within limits and free (INVALID_ROBOT_STATE, START_STATE_IN_COLLISION);
-inverse kinematics over a fan of gripper pitches, the preferred one first, must give
-solutions within limits (NO_IK_SOLUTION) of which some are free (GOAL_IN_COLLISION);
+the start must be within limits and not touch anything (INVALID_ROBOT_STATE,
+START_STATE_IN_COLLISION); inverse kinematics over a fan of gripper pitches, the preferred
+one first, must give solutions within limits (NO_IK_SOLUTION) of which some are free with
+``goal_margin`` to spare, so that the next start is clear (GOAL_IN_COLLISION);
 RRTConnect (OMPL) searches joint space from the start to any of the best free solutions
 within the time allowed (TIMED_OUT, PLANNING_FAILED) unless a straight line is free; every
 motion is checked densely (all states no more than ``resolution`` apart in every joint,
@@ -45,6 +46,7 @@ class PlannerSettings:
     acceleration: float = 6.0
     sample_period: float = 0.05
     seed: int = 1
+    goal_margin: float = 0.003
 
 
 @dataclass
@@ -127,7 +129,7 @@ class ArmPlanner:
                 plan = Plan(Codes.INVALID_GOAL_CONSTRAINTS, f"goal {goal.round(3).tolist()} is "
                             "outside the joint limits")
             else:
-                hit = self.model.collision(goal, finger, scene)
+                hit = self.model.collision(goal, finger, scene, self.settings.goal_margin)
                 plan = Plan(Codes.GOAL_IN_COLLISION, f"the goal touches {hit}") if hit \
                     else self._search(start, [goal], finger, scene)
         plan.planning_seconds = time.perf_counter() - began
@@ -137,7 +139,9 @@ class ArmPlanner:
         if not np.all(np.isfinite(start)) or not self.k.within_limits(start, slack=0.02):
             return Plan(Codes.INVALID_ROBOT_STATE, f"the arm's state {start.round(3).tolist()} "
                         "is outside its joint limits")
-        hit = self.model.collision(start, finger, scene)
+        # the arm where it really is: true shapes (no padding), since a controller that holds
+        # a goal may sag into the padding a little
+        hit = self.model.collision(start, finger, scene, -self.model.padding)
         if hit:
             return Plan(Codes.START_STATE_IN_COLLISION, f"the arm already touches {hit}")
         return None
@@ -162,9 +166,10 @@ class ArmPlanner:
             return Plan(Codes.NO_IK_SOLUTION, f"no joint solution within the limits puts the "
                         f"gripper at {target.round(3).tolist()} (out of reach)")
         goals = np.array(candidates)
-        free = self.model.valid(goals, finger, scene)
+        free = self.model.valid(goals, finger, scene, self.settings.goal_margin)
         if not free.any():
-            hits = Counter(self.model.collision(q, finger, scene) for q in goals[:12])
+            hits = Counter(self.model.collision(q, finger, scene, self.settings.goal_margin)
+                           for q in goals[:12])
             what = ", ".join(f"{name}" for name, _ in hits.most_common())
             return Plan(Codes.GOAL_IN_COLLISION, f"every joint solution for "
                         f"{target.round(3).tolist()} touches something ({what})")
