@@ -37,6 +37,8 @@ class BadInput(unittest.TestCase):
         cls.follow = rospy.ServiceProxy("follow", Follow)
         answer = cls.reset(BOX_ON_TABLE, True)
         assert answer.error_code.val == Codes.SUCCESS, answer.message
+        count = cls.received[0]  # the state after the motion, not one from its last moment
+        wait_until(lambda: cls.received[0] >= count + 10, "joint states after the reset")
 
     def state(self):
         names = ARM_JOINTS + FINGER_JOINTS
