@@ -321,6 +321,7 @@ class Mover:
             self.gripper.cancel_all_goals()
             self._cycle.join(timeout=self.settings.action_timeout)
         self._cycle = None
+        self._stop_cycle.clear()
 
     # --- execution -----------------------------------------------------------------------
     def _execute(self, plan: Plan) -> None:
