@@ -14,6 +14,9 @@ The scene (sim_bridge/bench/): a closed hall with 40 static objects and an RB1-c
   first /scan                   wall seconds from starting roslaunch (master already up)
                                 to the first /scan message
   peak RSS                      the simulator process's VmHWM
+  planning time                 arm_move's planner on 200 random reachable, collision-free
+                                targets in the table scene, each from where the last
+                                ended (the unit test's targets): median and 95th percentile
 
 The master is started first so that its start-up is not counted. Results also go to
 bench_results/bench.txt.
@@ -37,7 +40,9 @@ TARGETS = {
     "CPU at real time (% of a core)": ("<=", 15.0),
     "first /scan after roslaunch (s)": ("<=", 3.0),
     "peak RSS (MB)": ("<=", 300.0),
+    "arm planning, median (ms)": ("<=", 50.0),
 }
+PLANNING_TARGETS = 200
 
 
 def simulator_pid() -> Optional[int]:
@@ -185,6 +190,39 @@ def measure_bare() -> float:
     return steps * world.step_size / elapsed
 
 
+def measure_planning() -> Dict[str, float]:
+    """Plans to the random targets of arm_move's planner test, as the mover would."""
+    import numpy as np
+    import yaml
+    from arm_move.collision import Box
+    from arm_move.planner import planner_from_config, random_reachable_targets
+    from arm_move.scene_config import REALSENSE_BOX, empty_scene, table_box
+
+    config = os.path.join(REPO, "arm_move", "config")
+
+    def load(name):
+        with open(os.path.join(config, name), encoding="utf-8") as stream:
+            return yaml.safe_load(stream)
+    robot, scene_config = load("px100.yaml"), load("scene.yaml")
+    planner = planner_from_config(robot, load("mover.yaml"))
+    scene = empty_scene(scene_config)
+    scene.add(table_box(scene_config))
+    box = scene_config[REALSENSE_BOX]
+    scene.add(Box.axis_aligned(REALSENSE_BOX, box["position"], box["size"], box["yaw"]))
+    opening = robot["finger"]["max"]
+    start, seconds, failed = np.zeros(4), [], 0
+    for target in random_reachable_targets(planner, scene, PLANNING_TARGETS, opening):
+        plan = planner.plan_to_position(start, opening, target, scene)
+        seconds.append(plan.planning_seconds)
+        if plan.ok:
+            start = plan.path[-1]
+        else:
+            failed += 1
+    return {"median": 1000 * float(np.median(seconds)),
+            "p95": 1000 * float(np.percentile(seconds, 95)),
+            "success": 100.0 * (PLANNING_TARGETS - failed) / PLANNING_TARGETS}
+
+
 def verdict(name: str, value: float) -> str:
     sense, target = TARGETS[name]
     met = value >= target if sense == ">=" else value <= target
@@ -212,6 +250,8 @@ def main() -> int:
             core.wait(timeout=20)
     print("bench: the same scene on bare pybullet...", flush=True)
     bare = measure_bare()
+    print("bench: arm planning...", flush=True)
+    planning = measure_planning()
     rows = [
         ("max real-time factor, ROS", fast["rtf"], "{:.1f}"),
         ("max real-time factor, bare pybullet", bare, "{:.1f}"),
@@ -220,9 +260,12 @@ def main() -> int:
         ("real-time factor when paced", paced["rtf"], "{:.3f}"),
         ("first /scan after roslaunch (s)", fast["first_scan"], "{:.2f}"),
         ("peak RSS (MB)", max(fast["rss"], paced["rss"]), "{:.0f}"),
+        ("arm planning, median (ms)", planning["median"], "{:.1f}"),
+        ("arm planning, 95th percentile (ms)", planning["p95"], "{:.1f}"),
+        ("arm planning, targets reached (%)", planning["success"], "{:.1f}"),
     ]
     lines = ["sim_bridge benchmark: 40 static objects, diff drive, 720-beam laser at 20 Hz, "
-             f"{WINDOW:g} s windows", "",
+             f"{WINDOW:g} s windows; arm_move planning: {PLANNING_TARGETS} random targets", "",
              f"| {'figure':38} | {'measured':>9} | {'target':>8} | {'':7} |",
              f"|{'-' * 40}|{'-' * 11}|{'-' * 10}|{'-' * 9}|"]
     for name, value, form in rows:

@@ -43,11 +43,11 @@ from sensor_msgs.msg import JointState
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 from visualization_msgs.msg import Marker, MarkerArray
 
-from arm_move.collision import ArmCollisionModel, Box
-from arm_move.kinematics import ARM_JOINTS, FINGER_JOINTS, ArmKinematics
+from arm_move.collision import Box
+from arm_move.kinematics import ARM_JOINTS, FINGER_JOINTS
 from arm_move.markers import path_marker, scene_markers
 from arm_move.msg import MoveItErrorCodes as Codes
-from arm_move.planner import ArmPlanner, Plan, PlannerSettings
+from arm_move.planner import ArmPlanner, Plan, planner_from_config
 from arm_move.scene_config import (REALSENSE_BOX, TABLE, empty_scene, quaternion_rotation,
                                    table_box)
 from arm_move.srv import (Follow, FollowResponse, Reset, ResetResponse, Step, StepResponse)
@@ -387,10 +387,7 @@ def main(argv=None) -> None:
                                                   os.path.join(package, "config", "scene.yaml")))
         waypoints = parse_waypoints(rospy.get_param("~waypoints", None))
         settings = _settings(MoverSettings, values)
-        kinematics = ArmKinematics.from_config(robot)
-        model = ArmCollisionModel(kinematics, robot["links"], robot["finger"],
-                                  settings.collision_padding, robot["self_collision_pairs"])
-        planner = ArmPlanner(kinematics, model, _settings(PlannerSettings, values))
+        planner = planner_from_config(robot, values)
         mover = Mover(settings, planner, scene_config, waypoints)
         mover.start()
     except (ValueError, KeyError, OSError, RuntimeError) as error:

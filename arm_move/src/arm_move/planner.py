@@ -19,7 +19,7 @@ import math
 import time
 from collections import Counter
 from dataclasses import dataclass, field
-from typing import List, Optional, Sequence
+from typing import List, Mapping, Optional, Sequence
 
 import numpy as np
 from ompl import base as ob
@@ -278,3 +278,30 @@ class ArmPlanner:
             plan.velocities[-1] = np.zeros(4)
             clock += duration
         return plan
+
+
+def planner_from_config(robot: Mapping, settings: Mapping) -> ArmPlanner:
+    """The planner for a robot yaml (config/px100.yaml) and the mover's settings
+    (config/mover.yaml and private parameters; unknown keys are ignored)."""
+    kinematics = ArmKinematics.from_config(robot)
+    model = ArmCollisionModel(kinematics, robot["links"], robot["finger"],
+                              float(settings.get("collision_padding", 0.005)),
+                              robot["self_collision_pairs"])
+    defaults = PlannerSettings()
+    known = {name: type(getattr(defaults, name))(value) for name, value in settings.items()
+             if name in PlannerSettings.__dataclass_fields__}
+    return ArmPlanner(kinematics, model, PlannerSettings(**known))
+
+
+def random_reachable_targets(planner: ArmPlanner, scene: Scene, count: int, finger: float,
+                             seed: int = 7) -> List[np.ndarray]:
+    """Gripper points of random free configurations: reachable and collision-free by
+    construction (the planner may choose another configuration for each)."""
+    rng = np.random.default_rng(seed)
+    targets = []
+    while len(targets) < count:
+        q = rng.uniform(planner.k.lower, planner.k.upper)
+        point = planner.k.gripper_point(q)
+        if planner.model.collision(q, finger, scene) is None and scene.containing(point) is None:
+            targets.append(point)
+    return targets

@@ -3,9 +3,9 @@ import os
 
 import yaml
 
-from arm_move.collision import ArmCollisionModel, Box, Scene
-from arm_move.kinematics import ArmKinematics
-from arm_move.planner import ArmPlanner, PlannerSettings
+from arm_move.collision import Box
+from arm_move.planner import planner_from_config
+from arm_move.scene_config import REALSENSE_BOX, empty_scene, table_box
 
 PACKAGE = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 CONFIG = os.path.join(PACKAGE, "config")
@@ -21,22 +21,16 @@ def arm_config():
 
 
 def table_scene():
-    scene_config = load("scene.yaml")
-    scene = Scene(floor_z=-scene_config["table_height"])
-    table = scene_config["table"]
-    scene.add(Box.axis_aligned("table", table["center"], table["size"]))
-    box = scene_config["realsense_box"]
-    scene.add(Box.axis_aligned("realsense_box", box["position"], box["size"], box["yaw"]))
+    """The table, and the RealSense box where the world puts it."""
+    config = load("scene.yaml")
+    scene = empty_scene(config)
+    scene.add(table_box(config))
+    box = config[REALSENSE_BOX]
+    scene.add(Box.axis_aligned(REALSENSE_BOX, box["position"], box["size"], box["yaw"]))
     return scene
 
 
-def planner(padding=None, **settings):
-    config = arm_config()
-    mover = load("mover.yaml")
-    kinematics = ArmKinematics.from_config(config)
-    model = ArmCollisionModel(kinematics, config["links"], config["finger"],
-                              mover["collision_padding"] if padding is None else padding,
-                              config["self_collision_pairs"])
-    values = {k: v for k, v in mover.items() if k in PlannerSettings.__dataclass_fields__}
+def planner(**settings):
+    values = load("mover.yaml")
     values.update(settings)
-    return ArmPlanner(kinematics, model, PlannerSettings(**values))
+    return planner_from_config(arm_config(), values)

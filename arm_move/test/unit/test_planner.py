@@ -13,22 +13,10 @@ from arm_fixtures import PACKAGE, arm_config, planner, table_scene  # noqa: E402
 from independent_check import IndependentChecker  # noqa: E402
 
 from arm_move.msg import MoveItErrorCodes as Codes  # noqa: E402
+from arm_move.planner import random_reachable_targets  # noqa: E402
 
 OPEN = 0.037
 TARGETS = 200
-
-
-def random_reachable_targets(arm, scene, count, seed=7):
-    """Gripper points of random free configurations: reachable and collision-free by
-    construction (the planner may choose another configuration for each)."""
-    rng = np.random.default_rng(seed)
-    targets = []
-    while len(targets) < count:
-        q = rng.uniform(arm.k.lower, arm.k.upper)
-        point = arm.k.gripper_point(q)
-        if arm.model.collision(q, OPEN, scene) is None and scene.containing(point) is None:
-            targets.append(point)
-    return targets
 
 
 @pytest.fixture(scope="module")
@@ -55,7 +43,7 @@ def test_random_reachable_targets_succeed_and_every_path_passes_the_dense_check(
     arm, scene = planner(), table_scene()
     start = np.zeros(4)
     failures, collisions, seconds = [], [], []
-    for target in random_reachable_targets(arm, scene, TARGETS):
+    for target in random_reachable_targets(arm, scene, TARGETS, OPEN):
         plan = arm.plan_to_position(start, OPEN, target, scene)
         seconds.append(plan.planning_seconds)
         if not plan.ok:
