@@ -1,5 +1,6 @@
-"""arm.launch fake:=true as a user runs it: rviz shows the arm, the planning scene and the
-planned path; reset and step answer from the command line."""
+"""arm.launch as a user runs it: with fake:=true rviz shows the arm, the planning scene and
+the planned path, and reset and step answer from the command line; with use_sim:=false and
+no driver, the launch stops with a message naming what a driver must provide."""
 import os
 import shutil
 import subprocess
@@ -39,3 +40,16 @@ def test_rviz_shows_the_scene_and_the_path(screen_env, results_dir, repo):
     assert path > PATH_PIXELS, f"{path} pixels look like the planned path"
     if os.environ.get("UPDATE_DOC_IMAGES") == "1":
         shutil.copyfile(shot, os.path.join(repo, "arm_move", "doc", "arm_rviz.png"))
+
+
+def test_without_a_driver_the_launch_stops_naming_what_is_missing(ros_env, results_dir):
+    result = subprocess.run(
+        ["roslaunch", "-p", ros_env["ROS_MASTER_URI"].rsplit(":", 1)[1], "arm_move",
+         "arm.launch", "use_sim:=false", "rviz:=false", "driver_timeout:=2"],
+        env=ros_env, capture_output=True, text=True, timeout=90, check=False)
+    output = result.stdout + result.stderr
+    assert "no driver answers on /px100/arm_controller/follow_joint_trajectory" in output, \
+        output[-3000:]
+    for topic in ("/px100/joint_states", "gripper_controller/follow_joint_trajectory"):
+        assert topic in output
+    assert "mover" in output and "required" in output.lower()  # the launch ended with it
