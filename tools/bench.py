@@ -208,7 +208,7 @@ def measure_planning() -> Dict[str, float]:
     scene = empty_scene(scene_config)
     scene.add(table_box(scene_config))
     box = scene_config[REALSENSE_BOX]
-    scene.add(Box.axis_aligned(REALSENSE_BOX, box["position"], box["size"], box["yaw"]))
+    scene.add(Box.upright(REALSENSE_BOX, box["position"], box["size"], box["yaw"]))
     opening = robot["finger"]["max"]
     start, seconds, failed = np.zeros(4), [], 0
     for target in random_reachable_targets(planner, scene, PLANNING_TARGETS, opening):

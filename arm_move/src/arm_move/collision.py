@@ -32,16 +32,12 @@ class Box:
     size: np.ndarray
 
     @classmethod
-    def axis_aligned(cls, name: str, center: Sequence[float], size: Sequence[float],
+    def upright(cls, name: str, center: Sequence[float], size: Sequence[float],
                      yaw: float = 0.0) -> "Box":
+        """A box standing upright, turned by ``yaw`` about z."""
         c, s = math.cos(yaw), math.sin(yaw)
         rotation = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
         return cls(name, np.asarray(center, float), rotation, np.asarray(size, float))
-
-    def penetrates(self, centers: np.ndarray, radii: np.ndarray) -> bool:
-        """Whether any sphere reaches into the box."""
-        outside = np.maximum(np.abs((centers - self.center) @ self.rotation) - self.size / 2, 0.0)
-        return bool(np.any(np.einsum("ij,ij->i", outside, outside) < radii * radii))
 
 
 @dataclass
@@ -161,7 +157,7 @@ class ArmCollisionModel:
         self._moving = np.nonzero(np.isin(self._group, MOVING))[0]
         self._moving_radii = self.radii[self._moving]
         base = links["base"]
-        self.base_box = Box.axis_aligned("base", (0, 0, base["size"][2] / 2), base["size"])
+        self.base_box = Box.upright("base", (0, 0, base["size"][2] / 2), base["size"])
         pairs_i, pairs_j, self._base_checked = [], [], np.zeros(len(rows), bool)
         for a, b in self_pairs:
             if "base" in (a, b):

@@ -8,7 +8,7 @@ from geometry_msgs.msg import Point, Pose, Quaternion
 from std_msgs.msg import ColorRGBA
 from visualization_msgs.msg import Marker, MarkerArray
 
-from arm_move.collision import Box, Scene
+from arm_move.collision import Scene
 
 SCENE_COLOUR = ColorRGBA(0.2, 0.6, 0.3, 0.6)
 PATH_COLOUR = ColorRGBA(1.0, 0.5, 0.0, 1.0)

@@ -16,7 +16,7 @@ REALSENSE_BOX = "realsense_box"
 
 def table_box(config: Mapping) -> Box:
     table = config["table"]
-    return Box.axis_aligned(TABLE, table["center"], table["size"])
+    return Box.upright(TABLE, table["center"], table["size"])
 
 
 def empty_scene(config: Mapping) -> Scene:

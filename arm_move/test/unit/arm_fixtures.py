@@ -26,7 +26,7 @@ def table_scene():
     scene = empty_scene(config)
     scene.add(table_box(config))
     box = config[REALSENSE_BOX]
-    scene.add(Box.axis_aligned(REALSENSE_BOX, box["position"], box["size"], box["yaw"]))
+    scene.add(Box.upright(REALSENSE_BOX, box["position"], box["size"], box["yaw"]))
     return scene
 
 

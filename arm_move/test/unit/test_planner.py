@@ -99,7 +99,7 @@ def test_the_search_goes_around_an_obstacle_and_is_repeatable(checker):
     # swing of the waist hits it, and the search has to fold the arm or lift it over
     from arm_move.collision import Box
     scene = table_scene()
-    scene.add(Box.axis_aligned("wall", (0.16, 0.0, 0.1), (0.02, 0.12, 0.2)))
+    scene.add(Box.upright("wall", (0.16, 0.0, 0.1), (0.02, 0.12, 0.2)))
     arm = planner()
     start = np.array([-1.2, 0.0, 0.0, 0.0])
     goal = np.array(arm.k.ik((0.05, 0.16, 0.08), math.pi / 2)[0])
