@@ -36,7 +36,8 @@ class FakeController:
     """One controller: its joints' positions, and the trajectory they follow."""
 
     def __init__(self, name: str, joints: Sequence[str], positions: Dict[str, float],
-                 lock: threading.Lock, rate: float):
+                 lock: threading.Lock, rate: float, publish_state):
+        self.publish_state = publish_state  # called once a goal is reached, before the result
         self.joints = list(joints)
         self.positions = positions
         self.lock = lock
@@ -86,6 +87,7 @@ class FakeController:
             if elapsed >= plan.end_time:
                 break
             rate.sleep()
+        self.publish_state()  # whoever hears the result can read the final state already
         self.server.set_succeeded(Result(error_code=Result.SUCCESSFUL))
 
 
@@ -105,16 +107,23 @@ def main(argv=None) -> None:
     positions.update({j: float(config["finger"]["max"]) for j in FINGER_JOINTS})
     lock = threading.Lock()
     publisher = rospy.Publisher("joint_states", JointState, queue_size=10)
-    FakeController("arm_controller", ARM_JOINTS, positions, lock, rate)
-    FakeController("gripper_controller", FINGER_JOINTS, positions, lock, rate)
-    rospy.loginfo("fake_executor: joints follow trajectories exactly, starting at %s", pose_name)
-    ticker = rospy.Rate(rate)
     names = list(ARM_JOINTS + FINGER_JOINTS)
-    while not rospy.is_shutdown():
+
+    def publish_state():
         with lock:
             state = JointState(name=names, position=[positions[n] for n in names])
         state.header.stamp = rospy.Time.now()
-        publisher.publish(state)
+        try:
+            publisher.publish(state)
+        except rospy.ROSException:  # shutting down
+            pass
+
+    FakeController("arm_controller", ARM_JOINTS, positions, lock, rate, publish_state)
+    FakeController("gripper_controller", FINGER_JOINTS, positions, lock, rate, publish_state)
+    rospy.loginfo("fake_executor: joints follow trajectories exactly, starting at %s", pose_name)
+    ticker = rospy.Rate(rate)
+    while not rospy.is_shutdown():
+        publish_state()
         try:
             ticker.sleep()
         except rospy.ROSInterruptException:

@@ -106,6 +106,7 @@ class Mover:
         self._busy = threading.Lock()
         self._state_lock = threading.Lock()
         self._positions = {}
+        self._state_stamp = None
         self._cycle: Optional[threading.Thread] = None
         self._stop_cycle = threading.Event()
 
@@ -145,6 +146,19 @@ class Mover:
     def _on_joint_states(self, message: JointState) -> None:
         with self._state_lock:
             self._positions.update(zip(message.name, message.position))
+            self._state_stamp = message.header.stamp
+
+    def _wait_for_fresh_state(self, since) -> None:
+        """After a motion: waits (briefly) for joint states stamped after it ended, so that
+        the next plan starts from where the arm is, not from where it was on its way."""
+        deadline = rospy.get_time() + 1.0
+        rate = rospy.Rate(100)
+        while not rospy.is_shutdown() and rospy.get_time() < deadline:
+            with self._state_lock:
+                if self._state_stamp is not None and self._state_stamp >= since:
+                    return
+            rate.sleep()
+        rospy.logwarn("mover: no joint states newer than the end of the last motion")
 
     def _wait_for_joint_states(self, timeout: float) -> None:
         deadline = rospy.get_time() + timeout
@@ -353,6 +367,7 @@ class Mover:
                           f"{duration + self.settings.execution_margin:.1f} s")
         if self._stop_cycle.is_set():
             raise Outcome(Codes.PREEMPTED, "stopped")
+        self._wait_for_fresh_state(rospy.Time.now())
         result = client.get_result()
         if result is None or result.error_code != 0:
             detail = result.error_string if result is not None else "no result"

@@ -27,16 +27,22 @@ class ArmMover(unittest.TestCase):
         rospy.init_node("arm_check")
         path = rospkg.RosPack().get_path("arm_move") + "/config/px100.yaml"
         cls.kinematics = ArmKinematics.from_file(path)
-        cls.joints = {}
-        rospy.Subscriber("joint_states", JointState,
-                         lambda m: cls.joints.update(zip(m.name, m.position)))
+        cls.joints, cls.received = {}, [0]
+
+        def on_joint_states(message):
+            cls.joints.update(zip(message.name, message.position))
+            cls.received[0] += 1
+        rospy.Subscriber("joint_states", JointState, on_joint_states)
         for name in ("reset", "step"):
             rospy.wait_for_service(name, timeout=60)
         cls.reset = rospy.ServiceProxy("reset", Reset)
         cls.step = rospy.ServiceProxy("step", Step)
 
     def arm(self):
-        wait_until(lambda: all(j in self.joints for j in ARM_JOINTS), "joint states")
+        """The arm's joints from a state published after this call (not one from a motion's
+        last moments)."""
+        count = self.received[0]
+        wait_until(lambda: self.received[0] >= count + 2, "fresh joint states")
         return np.array([self.joints[j] for j in ARM_JOINTS])
 
     def test_reset_then_a_step_below_the_floor_then_a_reachable_step(self):

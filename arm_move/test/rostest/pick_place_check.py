@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
-"""rostest node for pick_place.test: after reset and one follow of config/waypoints.yaml on
-the physics simulation, the block's true position (the simulator's) is within 3 cm of the
-drop-off place, and it was lifted on the way (it did not slide there)."""
+"""rostest node for pick_place.test: reset moves the simulated RealSense box where it is
+asked; after one follow of config/waypoints.yaml on the physics simulation, the block's
+true position (the simulator's) is within 3 cm of the drop-off place, and it was lifted
+on the way (it did not slide there)."""
+import math
 import threading
 import unittest
 
@@ -12,10 +14,14 @@ from arm_move.msg import MoveItErrorCodes as Codes
 from arm_move.srv import Follow, Reset
 from geometry_msgs.msg import Point, Pose, Quaternion
 from sim_bridge.msg import ModelStates
+from sim_bridge.srv import GetModelState
 
 TABLE_HEIGHT = 0.75
 DROP_OFF = (0.17, -0.02)       # in px100/base_link, as the last waypoints of the yaml
-BOX_ON_TABLE = Pose(Point(0.16, -0.17, 0.025), Quaternion(0, 0, 0, 1))
+# the box a little further right than the world puts it, turned 0.4 rad
+BOX_YAW = 0.4
+BOX_ON_TABLE = Pose(Point(0.15, -0.19, 0.025),
+                    Quaternion(0, 0, math.sin(BOX_YAW / 2), math.cos(BOX_YAW / 2)))
 
 
 class PickAndPlace(unittest.TestCase):
@@ -34,6 +40,12 @@ class PickAndPlace(unittest.TestCase):
         self.assertEqual(waypoints[-2][:2], list(DROP_OFF))
         answer = rospy.ServiceProxy("reset", Reset)(BOX_ON_TABLE, False)
         self.assertEqual(answer.error_code.val, Codes.SUCCESS, answer.message)
+        box = rospy.ServiceProxy("/gazebo/get_model_state", GetModelState)("realsense_box", "")
+        self.assertAlmostEqual(box.pose.position.x, BOX_ON_TABLE.position.x, delta=0.005)
+        self.assertAlmostEqual(box.pose.position.y, BOX_ON_TABLE.position.y, delta=0.005)
+        q = box.pose.orientation
+        yaw = math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
+        self.assertAlmostEqual(yaw, BOX_YAW, delta=0.02)
         answer = rospy.ServiceProxy("follow", Follow)(False)
         self.assertEqual(answer.error_code.val, Codes.SUCCESS, answer.message)
         with lock:
