@@ -19,8 +19,9 @@ check_platform
 
 # --- 2. Debian packages ---------------------------------------------------------------
 # What each group is for: ROS 1 runtime and build, message bindings (Python) and their CMake
-# configs (lib*-msgs-dev, for packages that generate messages), the robot tools, headless
-# rviz, the venv.
+# configs (lib*-msgs-dev, for packages that generate messages), rostest's CMake config (so
+# that `catkin_make run_tests` runs the packages' add_rostest tests), the robot tools,
+# headless rviz, the venv.
 apt_packages=(
   catkin catkin-lint python3-catkin-pkg ros-message-generation ros-message-runtime
   python3-genpy python3-genmsg cmake make g++
@@ -32,6 +33,7 @@ apt_packages=(
   python3-visualization-msgs python3-trajectory-msgs python3-actionlib-msgs python3-rosgraph-msgs
   python3-tf2-msgs python3-rospkg
   libstd-msgs-dev libgeometry-msgs-dev libtrajectory-msgs-dev libactionlib-msgs-dev
+  librostest-dev
   ros-robot-state-publisher joint-state-publisher joint-state-publisher-gui rviz
   liburdfdom-tools
   xvfb xauth x11-utils xdotool imagemagick
@@ -92,7 +94,7 @@ link="$ws/src/$(basename "$repo")"
 # The system interpreter first, whatever pyenv or conda put on PATH.
 export PATH="/usr/bin:/bin:$PATH"
 log="$ws/catkin_make.log"
-if (cd "$ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=OFF \
+if (cd "$ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON \
       >"$log" 2>&1); then
   echo "setup: catkin build: ok ($(ls -d "$repo"/*/package.xml | wc -l) packages; log $log)"
 else
