@@ -111,6 +111,18 @@ def _numbers(element, path):
     return [float(v) for v in element.find(path).text.split()]
 
 
+def _check_free_body(model, spec, table_height):
+    """A world model against its yaml entry: size, place on the table, mass, a solid box's
+    inertia."""
+    size = _numbers(model, ".//collision/geometry/box/size")
+    assert size == pytest.approx(spec["size"])
+    assert _numbers(model, "pose")[:3] == pytest.approx(
+        np.array(spec["position"]) + (0, 0, table_height))
+    assert float(model.find(".//inertial/mass").text) == spec["mass"]
+    inertias = [float(model.find(f".//inertia/{axis}").text) for axis in ("ixx", "iyy", "izz")]
+    assert inertias == pytest.approx(tuple(inertia.solid_box(spec["mass"], *size)), rel=1e-5)
+
+
 def test_the_world_holds_the_scene_of_the_yaml():
     scene = read("scene.yaml")
     world = ET.parse(WORLD).getroot()
@@ -120,22 +132,11 @@ def test_the_world_holds_the_scene_of_the_yaml():
     centre = np.array(scene["table"]["center"]) + (0, 0, height)
     assert _numbers(table, "pose")[:3] == pytest.approx(centre)
 
-    box, spec = _model(world, "realsense_box"), scene["realsense_box"]
-    assert spec["size"] == pytest.approx((0.14, 0.09, 0.05)) and spec["mass"] == 0.1
-    size = _numbers(box, ".//collision/geometry/box/size")
-    assert size == pytest.approx(spec["size"])
-    assert _numbers(box, "pose")[:3] == pytest.approx(np.array(spec["position"]) + (0, 0, height))
-    assert float(box.find(".//inertial/mass").text) == spec["mass"]
-    inertias = [float(box.find(f".//inertia/{axis}").text) for axis in ("ixx", "iyy", "izz")]
-    assert inertias == pytest.approx(tuple(inertia.solid_box(spec["mass"], *size)), rel=1e-5)
-
-    block, spec = _model(world, "pick_object"), scene["pick_object"]
-    size = _numbers(block, ".//collision/geometry/box/size")
-    assert size == pytest.approx(spec["size"])
-    assert _numbers(block, "pose")[:3] == pytest.approx(np.array(spec["position"]) + (0, 0, height))
-    assert float(block.find(".//inertial/mass").text) == spec["mass"]
-    inertias = [float(block.find(f".//inertia/{axis}").text) for axis in ("ixx", "iyy", "izz")]
-    assert inertias == pytest.approx(tuple(inertia.solid_box(spec["mass"], *size)), rel=1e-5)
+    box = scene["realsense_box"]
+    assert box["size"] == pytest.approx((0.14, 0.09, 0.05)) and box["mass"] == 0.1
+    for name in ("realsense_box", "pick_object"):
+        _check_free_body(_model(world, name), scene[name], height)
+    spec = scene["pick_object"]
     # the block fits the open gripper and is squeezed by the closed one
     finger = read("px100.yaml")["finger"]
     assert 2 * finger["min"] < spec["size"][1] < 2 * finger["max"]
