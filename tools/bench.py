@@ -194,21 +194,17 @@ def measure_planning() -> Dict[str, float]:
     """Plans to the random targets of arm_move's planner test, as the mover would."""
     import numpy as np
     import yaml
-    from arm_move.collision import Box
     from arm_move.planner import planner_from_config, random_reachable_targets
-    from arm_move.scene_config import REALSENSE_BOX, empty_scene, table_box
+    from arm_move.scene_config import world_scene
 
     config = os.path.join(REPO, "arm_move", "config")
 
     def load(name):
         with open(os.path.join(config, name), encoding="utf-8") as stream:
             return yaml.safe_load(stream)
-    robot, scene_config = load("px100.yaml"), load("scene.yaml")
+    robot = load("px100.yaml")
     planner = planner_from_config(robot, load("mover.yaml"))
-    scene = empty_scene(scene_config)
-    scene.add(table_box(scene_config))
-    box = scene_config[REALSENSE_BOX]
-    scene.add(Box.upright(REALSENSE_BOX, box["position"], box["size"], box["yaw"]))
+    scene = world_scene(load("scene.yaml"))
     opening = robot["finger"]["max"]
     start, seconds, failed = np.zeros(4), [], 0
     for target in random_reachable_targets(planner, scene, PLANNING_TARGETS, opening):

@@ -16,6 +16,7 @@ from typing import Dict, List, Mapping, Optional, Sequence, Tuple
 import numpy as np
 
 from arm_move.kinematics import ArmKinematics
+from sim_bridge.poses import quaternion_from_rpy, quaternion_matrix
 
 # links checked against the scene (the base and the shoulder never move off the table)
 MOVING = ("upper_arm", "forearm", "hand")
@@ -23,21 +24,26 @@ MOVING = ("upper_arm", "forearm", "hand")
 
 @dataclass
 class Box:
-    """An oriented box: ``center`` (m), ``rotation`` (3x3, box axes in the scene frame),
-    ``size`` (full edge lengths)."""
+    """An oriented box: ``center`` (m), ``orientation`` (a unit quaternion x, y, z, w, in
+    the scene frame), ``size`` (full edge lengths); ``rotation`` (its axes as a 3x3 matrix)
+    follows from the orientation."""
 
     name: str
     center: np.ndarray
-    rotation: np.ndarray
+    orientation: Tuple[float, float, float, float]
     size: np.ndarray
+    rotation: np.ndarray = field(init=False)
+
+    def __post_init__(self):
+        self.center = np.asarray(self.center, float)
+        self.size = np.asarray(self.size, float)
+        self.rotation = quaternion_matrix(self.orientation)
 
     @classmethod
     def upright(cls, name: str, center: Sequence[float], size: Sequence[float],
-                     yaw: float = 0.0) -> "Box":
+                yaw: float = 0.0) -> "Box":
         """A box standing upright, turned by ``yaw`` about z."""
-        c, s = math.cos(yaw), math.sin(yaw)
-        rotation = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
-        return cls(name, np.asarray(center, float), rotation, np.asarray(size, float))
+        return cls(name, center, quaternion_from_rpy(0.0, 0.0, yaw), size)
 
 
 @dataclass
@@ -76,26 +82,30 @@ class Scene:
                 return name
         return None
 
-    def hits(self, centres: np.ndarray, radii: np.ndarray) -> np.ndarray:
-        """For a batch of sphere sets (m x n x 3): whether each touches the floor or a box."""
-        hit = np.any(centres[..., 2] - radii < self.floor_z, axis=1)
-        names, box_centres, rotations, halves = self.stacked()
+    def _touches(self, centres: np.ndarray, radii: np.ndarray):
+        """For a batch of sphere sets (m x n x 3): whether each touches the floor (m), and
+        each box (one m-vector per box, in the order of ``stacked``)."""
+        floor = np.any(centres[..., 2] - radii < self.floor_z, axis=1)
+        _, box_centres, rotations, halves = self.stacked()
+        boxes = []
         for centre, rotation, half in zip(box_centres, rotations, halves):
             outside = np.maximum(np.abs((centres - centre) @ rotation) - half, 0.0)
-            hit |= np.any(np.einsum("mnj,mnj->mn", outside, outside) < radii * radii, axis=1)
-        return hit
+            boxes.append(np.any(np.einsum("mnj,mnj->mn", outside, outside) < radii * radii,
+                                axis=1))
+        return floor, boxes
+
+    def hits(self, centres: np.ndarray, radii: np.ndarray) -> np.ndarray:
+        """For a batch of sphere sets (m x n x 3): whether each touches the floor or a box."""
+        floor, boxes = self._touches(centres, radii)
+        return np.logical_or.reduce([floor, *boxes])
 
     def first_hit(self, centres: np.ndarray, radii: np.ndarray) -> Optional[str]:
-        """The name of what the spheres touch first ("floor", a box), or None."""
-        if np.any(centres[:, 2] - radii < self.floor_z):
+        """The name of what one set of spheres (n x 3) touches ("floor", a box), or None."""
+        floor, boxes = self._touches(centres[None], radii)
+        if floor[0]:
             return "floor"
-        names, box_centres, rotations, halves = self.stacked()
-        if not names:
-            return None
-        local = np.einsum("bnk,bkj->bnj", centres[None, :, :] - box_centres[:, None, :], rotations)
-        outside = np.maximum(np.abs(local) - halves[:, None, :], 0.0)
-        hit = np.any(np.einsum("bnj,bnj->bn", outside, outside) < radii * radii, axis=1)
-        return names[int(np.argmax(hit))] if hit.any() else None
+        names = self.stacked()[0]
+        return next((name for name, hit in zip(names, boxes) if hit[0]), None)
 
 
 class ArmCollisionModel:

@@ -3,7 +3,6 @@ from __future__ import annotations
 
 from typing import Iterable, Sequence
 
-import numpy as np
 from geometry_msgs.msg import Point, Pose, Quaternion
 from std_msgs.msg import ColorRGBA
 from visualization_msgs.msg import Marker, MarkerArray
@@ -12,26 +11,6 @@ from arm_move.collision import Scene
 
 SCENE_COLOUR = ColorRGBA(0.2, 0.6, 0.3, 0.6)
 PATH_COLOUR = ColorRGBA(1.0, 0.5, 0.0, 1.0)
-
-
-def _rotation_quaternion(m: np.ndarray) -> Quaternion:
-    """The quaternion of a rotation matrix (Shepperd's method: divide by the largest term)."""
-    trace = m[0, 0] + m[1, 1] + m[2, 2]
-    if trace > 0:
-        s = 2 * np.sqrt(trace + 1)
-        return Quaternion((m[2, 1] - m[1, 2]) / s, (m[0, 2] - m[2, 0]) / s,
-                          (m[1, 0] - m[0, 1]) / s, s / 4)
-    if m[0, 0] > m[1, 1] and m[0, 0] > m[2, 2]:
-        s = 2 * np.sqrt(1 + m[0, 0] - m[1, 1] - m[2, 2])
-        return Quaternion(s / 4, (m[0, 1] + m[1, 0]) / s, (m[0, 2] + m[2, 0]) / s,
-                          (m[2, 1] - m[1, 2]) / s)
-    if m[1, 1] > m[2, 2]:
-        s = 2 * np.sqrt(1 + m[1, 1] - m[0, 0] - m[2, 2])
-        return Quaternion((m[0, 1] + m[1, 0]) / s, s / 4, (m[1, 2] + m[2, 1]) / s,
-                          (m[0, 2] - m[2, 0]) / s)
-    s = 2 * np.sqrt(1 + m[2, 2] - m[0, 0] - m[1, 1])
-    return Quaternion((m[0, 2] + m[2, 0]) / s, (m[1, 2] + m[2, 1]) / s, s / 4,
-                      (m[1, 0] - m[0, 1]) / s)
 
 
 def scene_markers(scene: Scene, frame: str, stamp) -> MarkerArray:
@@ -44,7 +23,7 @@ def scene_markers(scene: Scene, frame: str, stamp) -> MarkerArray:
         marker = Marker(type=Marker.CUBE, action=Marker.ADD, id=index, ns=box.name,
                         color=SCENE_COLOUR)
         marker.header.frame_id, marker.header.stamp = frame, stamp
-        marker.pose = Pose(Point(*box.center), _rotation_quaternion(box.rotation))
+        marker.pose = Pose(Point(*box.center), Quaternion(*box.orientation))
         marker.scale.x, marker.scale.y, marker.scale.z = box.size
         markers.markers.append(marker)
     return markers

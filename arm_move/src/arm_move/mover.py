@@ -30,7 +30,7 @@ import math
 import os
 import sys
 import threading
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 from typing import List, Optional
 
 import actionlib
@@ -47,8 +47,8 @@ from arm_move.collision import Box
 from arm_move.kinematics import ARM_JOINTS, FINGER_JOINTS
 from arm_move.markers import path_marker, scene_markers
 from arm_move.msg import MoveItErrorCodes as Codes
-from arm_move.planner import ArmPlanner, Plan, planner_from_config
-from arm_move.scene_config import (REALSENSE_BOX, TABLE, empty_scene, quaternion_rotation,
+from arm_move.planner import ArmPlanner, Plan, planner_from_config, settings_from
+from arm_move.scene_config import (REALSENSE_BOX, TABLE, empty_scene, unit_quaternion,
                                    table_box)
 from arm_move.srv import (Follow, FollowResponse, Reset, ResetResponse, Step, StepResponse)
 
@@ -212,11 +212,11 @@ class Mover:
                           f"reset: box position {position.tolist()} is not finite")
         o = pose.orientation
         try:
-            rotation = quaternion_rotation(o.x, o.y, o.z, o.w)
+            orientation = unit_quaternion(o.x, o.y, o.z, o.w)
         except ValueError as error:
             raise Outcome(Codes.INVALID_GOAL_CONSTRAINTS, f"reset: box {error}") from None
         size = self.scene_config[REALSENSE_BOX]["size"]
-        box = Box(REALSENSE_BOX, position, rotation, np.asarray(size, float))
+        box = Box(REALSENSE_BOX, position, orientation, size)
         trial = empty_scene(self.scene_config)
         for other in self.scene.boxes.values():
             if other.name != REALSENSE_BOX:
@@ -384,12 +384,6 @@ class Mover:
                                              rospy.Time.now()))
 
 
-def _settings(cls, values):
-    known = {f.name for f in fields(cls)}
-    return cls(**{name: type(getattr(cls(), name))(value) for name, value in values.items()
-                  if name in known})
-
-
 def main(argv=None) -> None:
     rospy.init_node("mover", argv=argv)
     package = rospkg.RosPack().get_path("arm_move")
@@ -401,7 +395,7 @@ def main(argv=None) -> None:
         scene_config = _read_yaml(rospy.get_param("~scene_config",
                                                   os.path.join(package, "config", "scene.yaml")))
         waypoints = parse_waypoints(rospy.get_param("~waypoints", None))
-        settings = _settings(MoverSettings, values)
+        settings = settings_from(MoverSettings, values)
         planner = planner_from_config(robot, values)
         mover = Mover(settings, planner, scene_config, waypoints)
         mover.start()

@@ -280,6 +280,14 @@ class ArmPlanner:
         return plan
 
 
+def settings_from(cls, values: Mapping):
+    """A settings dataclass (every field with a default) from a mapping: known keys only,
+    each cast to its default's type; the rest keep their defaults."""
+    defaults = cls()
+    return cls(**{name: type(getattr(defaults, name))(value) for name, value in values.items()
+                  if name in cls.__dataclass_fields__})
+
+
 def planner_from_config(robot: Mapping, settings: Mapping) -> ArmPlanner:
     """The planner for a robot yaml (config/px100.yaml) and the mover's settings
     (config/mover.yaml and private parameters; unknown keys are ignored)."""
@@ -287,10 +295,7 @@ def planner_from_config(robot: Mapping, settings: Mapping) -> ArmPlanner:
     model = ArmCollisionModel(kinematics, robot["links"], robot["finger"],
                               float(settings.get("collision_padding", 0.005)),
                               robot["self_collision_pairs"])
-    defaults = PlannerSettings()
-    known = {name: type(getattr(defaults, name))(value) for name, value in settings.items()
-             if name in PlannerSettings.__dataclass_fields__}
-    return ArmPlanner(kinematics, model, PlannerSettings(**known))
+    return ArmPlanner(kinematics, model, settings_from(PlannerSettings, settings))
 
 
 def random_reachable_targets(planner: ArmPlanner, scene: Scene, count: int, finger: float,

@@ -3,8 +3,7 @@ The same numbers place the objects in the simulation (worlds/arm_box.world is ch
 against them by a description test)."""
 from __future__ import annotations
 
-import math
-from typing import Mapping, Sequence
+from typing import Mapping, Tuple
 
 import numpy as np
 
@@ -24,8 +23,8 @@ def empty_scene(config: Mapping) -> Scene:
     return Scene(floor_z=-float(config["table_height"]))
 
 
-def quaternion_rotation(x: float, y: float, z: float, w: float) -> np.ndarray:
-    """The rotation matrix of a quaternion; ValueError when it is not finite or has (nearly)
+def unit_quaternion(x: float, y: float, z: float, w: float) -> Tuple[float, ...]:
+    """The quaternion made unit length; ValueError when it is not finite or has (nearly)
     no length."""
     q = np.array([x, y, z, w], dtype=float)
     if not np.all(np.isfinite(q)):
@@ -33,12 +32,14 @@ def quaternion_rotation(x: float, y: float, z: float, w: float) -> np.ndarray:
     norm = float(np.linalg.norm(q))
     if norm < 1e-6:
         raise ValueError(f"orientation {q.tolist()} is a zero-length quaternion")
-    x, y, z, w = q / norm
-    return np.array([
-        [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-        [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-        [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
+    return tuple(float(c) for c in q / norm)
 
 
-def yaw_quaternion(yaw: float) -> Sequence[float]:
-    return (0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2))
+def world_scene(config: Mapping) -> Scene:
+    """The scene as the world starts: the table, and the RealSense box where the yaml puts
+    it (the mover itself starts with the table only, and places the box on reset)."""
+    scene = empty_scene(config)
+    scene.add(table_box(config))
+    box = config[REALSENSE_BOX]
+    scene.add(Box.upright(REALSENSE_BOX, box["position"], box["size"], box["yaw"]))
+    return scene

@@ -14,6 +14,7 @@ from arm_move.msg import MoveItErrorCodes as Codes
 from arm_move.srv import Follow, Reset
 from geometry_msgs.msg import Point, Pose, Quaternion
 from sim_bridge.msg import ModelStates
+from sim_bridge.poses import yaw_from_quaternion
 from sim_bridge.srv import GetModelState
 
 TABLE_HEIGHT = 0.75
@@ -44,8 +45,7 @@ class PickAndPlace(unittest.TestCase):
         self.assertAlmostEqual(box.pose.position.x, BOX_ON_TABLE.position.x, delta=0.005)
         self.assertAlmostEqual(box.pose.position.y, BOX_ON_TABLE.position.y, delta=0.005)
         q = box.pose.orientation
-        yaw = math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
-        self.assertAlmostEqual(yaw, BOX_YAW, delta=0.02)
+        self.assertAlmostEqual(yaw_from_quaternion((q.x, q.y, q.z, q.w)), BOX_YAW, delta=0.02)
         answer = rospy.ServiceProxy("follow", Follow)(False)
         self.assertEqual(answer.error_code.val, Codes.SUCCESS, answer.message)
         with lock:

@@ -3,9 +3,8 @@ import os
 
 import yaml
 
-from arm_move.collision import Box
 from arm_move.planner import planner_from_config
-from arm_move.scene_config import REALSENSE_BOX, empty_scene, table_box
+from arm_move.scene_config import world_scene
 
 PACKAGE = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 CONFIG = os.path.join(PACKAGE, "config")
@@ -22,12 +21,7 @@ def arm_config():
 
 def table_scene():
     """The table, and the RealSense box where the world puts it."""
-    config = load("scene.yaml")
-    scene = empty_scene(config)
-    scene.add(table_box(config))
-    box = config[REALSENSE_BOX]
-    scene.add(Box.upright(REALSENSE_BOX, box["position"], box["size"], box["yaw"]))
-    return scene
+    return world_scene(load("scene.yaml"))
 
 
 def planner(**settings):

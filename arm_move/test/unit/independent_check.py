@@ -40,7 +40,7 @@ class IndependentChecker:
         for box in scene_boxes:
             shape = pb.createCollisionShape(pb.GEOM_BOX, halfExtents=list(np.asarray(box.size) / 2),
                                             physicsClientId=self.client)
-            quaternion = _quaternion(box.rotation)
+            quaternion = list(box.orientation)
             self.obstacles.append((box.name, pb.createMultiBody(0, shape, -1, list(box.center),
                                                                  quaternion,
                                                                  physicsClientId=self.client)))
@@ -85,8 +85,3 @@ class IndependentChecker:
                     return q, hit
         return None
 
-
-def _quaternion(rotation):
-    """The scene's boxes turn about z only."""
-    yaw = math.atan2(rotation[1][0], rotation[0][0])
-    return [0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2)]

@@ -63,6 +63,11 @@ def load_defaults(path: str) -> dict:
     return values
 
 
+def packaged_settings_path() -> str:
+    """The package's config/flip.yaml: the one place the defaults live."""
+    return os.path.join(rospkg.RosPack().get_path("diff_drive"), "config", "flip.yaml")
+
+
 def commanded_speed(settings: FlipSettings, elapsed: float) -> float:
     """The wheels' ground speed ``elapsed`` seconds into the routine: +speed on even legs,
     -speed on odd ones."""
@@ -141,9 +146,8 @@ class FlipNode:
 
 def main(argv=None) -> None:
     rospy.init_node("flip", argv=argv)
-    defaults_path = os.path.join(rospkg.RosPack().get_path("diff_drive"), "config", "flip.yaml")
     try:
-        values = load_defaults(defaults_path)
+        values = load_defaults(packaged_settings_path())
         values.update({field.name: rospy.get_param("~" + field.name)
                        for field in fields(FlipSettings) if rospy.has_param("~" + field.name)})
         settings = FlipSettings.from_mapping(values, rospy.resolve_name("~"))

@@ -13,7 +13,8 @@ import tempfile
 import rospkg
 from geometry_msgs.msg import Twist
 
-from diff_drive.flip import FlipSettings, commanded_speed, load_defaults
+from diff_drive.flip import (FlipSettings, commanded_speed, load_defaults,
+                             packaged_settings_path)
 from sim_bridge.local_bus import LocalBus
 from sim_bridge.sdf_world import load_world
 from sim_bridge.snapshots import render, write_gif, write_ppm
@@ -29,7 +30,7 @@ def render_flip(output: str, seconds: float) -> int:
     """Simulates ``seconds`` of the routine with the packaged settings, writes the GIF and
     returns the number of frames."""
     package = rospkg.RosPack().get_path("diff_drive")
-    defaults = os.path.join(package, "config", "flip.yaml")
+    defaults = packaged_settings_path()
     settings = FlipSettings.from_mapping(load_defaults(defaults), defaults)
     bus = LocalBus()
     world = World(bus)

@@ -13,6 +13,7 @@ from geometry_msgs.msg import Twist
 
 from diff_drive.flip import FlipCounter, up_axis_z
 from sim_bridge.msg import ModelStates
+from sim_bridge.poses import yaw_from_quaternion
 from sim_bridge.testing import wait_until
 
 ROBOT = "ddrive"
@@ -45,8 +46,7 @@ class FlipRoutine(unittest.TestCase):
         q = pose.orientation
         with self.lock:
             if not self.poses:  # the body's x axis, on the ground plane
-                self.start_heading = math.atan2(2 * (q.w * q.z + q.x * q.y),
-                                                1 - 2 * (q.y * q.y + q.z * q.z))
+                self.start_heading = yaw_from_quaternion((q.x, q.y, q.z, q.w))
             self.poses.append((rospy.get_time(), pose.position.x, pose.position.y,
                                up_axis_z(q.x, q.y, q.z, q.w)))
 
