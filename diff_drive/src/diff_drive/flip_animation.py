@@ -6,6 +6,7 @@ in-process bus instead of a master) and pybullet's software renderer.
 """
 from __future__ import annotations
 
+import math
 import os
 import sys
 import tempfile
@@ -22,8 +23,10 @@ from sim_bridge.world import World
 from urdf_tools.xacro_loader import expand
 
 FRAME_SECONDS = 0.08   # 12.5 frames per simulated second, played back in real time
-EYE, TARGET = (1.4, -2.6, 0.7), (1.4, 0.0, 0.2)  # beside the lane, looking across it
-SPAWN_HEIGHT = 0.125   # as ddrive.launch: the wheel radius and 5 mm
+# where ddrive.launch spawns the robot by default: its lane runs along the diagonal
+SPAWN_POSITION = (-1.2, -1.2, 0.125)   # z: the wheel radius and 5 mm
+SPAWN_YAW = math.pi / 4
+EYE, TARGET = (2.2, -1.8, 0.8), (0.3, 0.1, 0.2)  # beside the lane, looking across it
 
 
 def render_flip(output: str, seconds: float) -> int:
@@ -37,7 +40,8 @@ def render_flip(output: str, seconds: float) -> int:
     try:
         world.load_world(load_world(os.path.join(package, "worlds", "ddrive.world")))
         world.spawn_urdf("ddrive", expand(os.path.join(package, "urdf", "ddrive.urdf.xacro")),
-                         (0.0, 0.0, SPAWN_HEIGHT))
+                         SPAWN_POSITION, (0.0, 0.0, math.sin(SPAWN_YAW / 2),
+                                          math.cos(SPAWN_YAW / 2)))
         command = Twist()
         steps_per_frame = int(round(FRAME_SECONDS / world.step_size))
         with tempfile.TemporaryDirectory() as folder:

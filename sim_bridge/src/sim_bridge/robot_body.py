@@ -14,6 +14,14 @@ pybullet differs from Gazebo in ways that matter here, and this module hides the
   The hull wheel rolled 2% too far per turn, and a flipping robot landing on two hull
   wheels yawed 10-17 degrees per flip, always the same way; implicit cylinders (exact
   size, no padding: measured) land straight within 1 degree;
+- a rigid cylinder on a flat floor touches it along a line, and pybullet keeps one point
+  of that line: an edge, picked by the sign of a rounding error. Both wheels of a robot
+  touched on the same side (measured: 7.2 N on one wheel, 5.0 N on the other, standing
+  still), and a flipping robot slid sideways at every reversal. A wheel (a collision
+  cylinder turning about its own axis on a continuous or revolute joint) is therefore
+  given a crown, as a real tyre has: a 2 mm tread at full radius in the middle and
+  shoulders 1 mm smaller on either side. It stands on its tread (6.1 N on each wheel)
+  and, tilted more than about 2 degrees, on a shoulder. Its inertial is the URDF's;
 - pybullet's contacts are rigid: a robot on two wheels and two casters touching exactly
   cannot share its weight among four points the way Gazebo's soft contacts do, and under
   acceleration the casters take it all and the wheels slip. Frictionless sphere casters
@@ -27,13 +35,14 @@ from __future__ import annotations
 import os
 import tempfile
 import xml.etree.ElementTree as ET
-from typing import Dict, List, Mapping, Sequence, Tuple
+from typing import Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy as np
 import pybullet as pb
 
 from sim_bridge.gazebo_tags import GazeboTags
 from sim_bridge.materials import gazebo_colour
+from urdf_tools.kinematics import rpy_matrix
 from urdf_tools.model import RobotModel, UrdfError
 
 # What a link without <inertial> weighs in pybullet: small against any real link, large
@@ -42,6 +51,10 @@ NEGLIGIBLE_MASS = 1e-3
 NEGLIGIBLE_INERTIA = 1e-7
 # how much smaller frictionless caster spheres are made (see the module's notes)
 CASTER_CLEARANCE = 0.001
+# a wheel's crown (see the module's notes): the tread's width at full radius, and how much
+# smaller the shoulders beside it are
+TREAD_WIDTH = 0.002
+SHOULDER_CLEARANCE = 0.001
 
 Vec3 = Tuple[float, float, float]
 Quat = Tuple[float, float, float, float]
@@ -67,10 +80,58 @@ def _is_caster(tags: GazeboTags, link: str) -> bool:
     return surface is not None and surface.mu1 == 0.0 and surface.mu2 == 0.0
 
 
+def _rotation_axis(model: RobotModel, link: str) -> Optional[np.ndarray]:
+    """The unit axis ``link`` turns about in its own frame, when its parent joint is
+    continuous or revolute."""
+    joint = model.parent_joint(link)
+    if joint is None or joint.type not in ("continuous", "revolute"):
+        return None
+    axis = np.asarray(joint.axis, dtype=float)
+    return axis / np.linalg.norm(axis)
+
+
+def _vector(text: Optional[str]) -> np.ndarray:
+    return np.array([float(v) for v in (text or "0 0 0").split()])
+
+
+def crown_wheels(link: ET.Element, axis: np.ndarray) -> None:
+    """Replaces each collision cylinder of ``link`` whose own axis is ``axis`` (a wheel)
+    by a crowned one: a tread at full radius in the middle and two shoulders
+    SHOULDER_CLEARANCE smaller in radius (see the module's notes)."""
+    for collision in link.findall("collision"):
+        cylinder = collision.find("geometry/cylinder")
+        if cylinder is None:
+            continue
+        origin = collision.find("origin")
+        xyz = _vector(origin.get("xyz") if origin is not None else None)
+        rpy = _vector(origin.get("rpy") if origin is not None else None)
+        along = rpy_matrix(*rpy)[:, 2]  # a URDF cylinder's axis is its frame's z
+        length, radius = float(cylinder.get("length")), float(cylinder.get("radius"))
+        if abs(float(along @ axis)) < 0.999 or length <= 2 * TREAD_WIDTH \
+                or radius <= 2 * SHOULDER_CLEARANCE:
+            continue
+        shoulder = (length - TREAD_WIDTH) / 2
+        shoulder_offset = (TREAD_WIDTH + shoulder) / 2
+        pieces = [(xyz, TREAD_WIDTH, radius),
+                  (xyz + along * shoulder_offset, shoulder, radius - SHOULDER_CLEARANCE),
+                  (xyz - along * shoulder_offset, shoulder, radius - SHOULDER_CLEARANCE)]
+        link.remove(collision)
+        for centre, piece_length, piece_radius in pieces:
+            piece = ET.SubElement(link, "collision")
+            ET.SubElement(piece, "origin", xyz=" ".join(repr(float(v)) for v in centre),
+                          rpy=" ".join(repr(float(v)) for v in rpy))
+            geometry = ET.SubElement(piece, "geometry")
+            ET.SubElement(geometry, "cylinder", length=repr(piece_length),
+                          radius=repr(piece_radius))
+
+
 def prepare_urdf(xml: str, model: RobotModel, tags: GazeboTags, warn) -> str:
     """The URDF text pybullet should load (see the module's notes)."""
     root = ET.fromstring(xml)
     for link in root.findall("link"):
+        axis = _rotation_axis(model, link.get("name", ""))
+        if axis is not None:
+            crown_wheels(link, axis)
         caster = _is_caster(tags, link.get("name", ""))
         for geometry in link.findall("collision/geometry"):
             for sphere in geometry.findall("sphere") if caster else ():

@@ -122,9 +122,8 @@ class World:
         pb.setGravity(*self.gravity, physicsClientId=self.client)
         pb.setTimeStep(self.step_size, physicsClientId=self.client)
         self._step_ns = int(round(self.step_size * 1e9))
-        # Friction as a pyramid, as Gazebo's ODE: pybullet's default cone friction twisted a
-        # diff-drive robot's heading by 3-4 degrees, always the same way, at every sudden
-        # reversal (about 1 degree with the pyramid).
+        # Friction as a pyramid, as Gazebo's ODE. A robot's (multibody's) contacts get a
+        # pyramid on the world's axes whatever this says (README, "pybullet facts").
         pb.setPhysicsEngineParameter(deterministicOverlappingPairs=1, enableConeFriction=0,
                                      physicsClientId=self.client)
 

@@ -261,3 +261,24 @@ def test_mesh_scenery_is_solid_and_seen(world, tmp_path):
     ahead = np.array([[1.0, 0.0, 0.0]])
     assert world.cast_rays((0.0, 0.0, 0.5), ahead, 0.0, 10.0)[0] == pytest.approx(2.5, abs=0.01)
     assert pb.rayTest((3, 0, 5), (3, 0, -1), physicsClientId=world.client)[0][0] >= 0
+
+
+def wheel_loads(world, name):
+    """The ground's normal force (N) on each wheel of robot ``name``."""
+    robot = world.model(name).robot
+    return [sum(contact[9] for contact in pb.getContactPoints(
+                bodyA=robot.id, linkIndexA=robot.link_index[f"{side}_wheel"],
+                physicsClientId=world.client))
+            for side in ("left", "right")]
+
+
+@pytest.mark.parametrize("heading_degrees", [0.0, 30.0, 45.0])
+def test_a_robot_stands_on_both_wheels_alike_whatever_its_heading(world, diff_bot_xml,
+                                                                    heading_degrees):
+    # a rigid cylinder keeps one edge of its contact line; the crowned wheel its middle
+    half = math.radians(heading_degrees) / 2
+    world.spawn_urdf("bot", diff_bot_xml(), (0, 0, 0), (0, 0, math.sin(half), math.cos(half)))
+    run(world, 1.0)
+    left, right = wheel_loads(world, "bot")
+    assert left > 1.0 and right > 1.0
+    assert left == pytest.approx(right, rel=0.02)
