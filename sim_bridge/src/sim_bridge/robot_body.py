@@ -19,9 +19,11 @@ pybullet differs from Gazebo in ways that matter here, and this module hides the
   touched on the same side (measured: 7.2 N on one wheel, 5.0 N on the other, standing
   still), and a flipping robot slid sideways at every reversal. A wheel (a collision
   cylinder turning about its own axis on a continuous or revolute joint) is therefore
-  given a crown, as a real tyre has: a 2 mm tread at full radius in the middle and
-  shoulders 1 mm smaller on either side. It stands on its tread (6.1 N on each wheel)
-  and, tilted more than about 2 degrees, on a shoulder. Its inertial is the URDF's;
+  given a crown, as a real tyre has: a core as wide as the wheel and 1 mm smaller in
+  radius, with a 2 mm tread at full radius around its middle. It stands on its tread
+  (6.1 N on each wheel) and, tilted more than about 2 degrees, on the core's edge. Two
+  shapes, not three: each one more costs about 5% of the simulator's speed. Its
+  inertial is the URDF's;
 - pybullet's contacts are rigid: a robot on two wheels and two casters touching exactly
   cannot share its weight among four points the way Gazebo's soft contacts do, and under
   acceleration the casters take it all and the wheels slip. Frictionless sphere casters
@@ -52,9 +54,9 @@ NEGLIGIBLE_INERTIA = 1e-7
 # how much smaller frictionless caster spheres are made (see the module's notes)
 CASTER_CLEARANCE = 0.001
 # a wheel's crown (see the module's notes): the tread's width at full radius, and how much
-# smaller the shoulders beside it are
+# smaller in radius the core under it is
 TREAD_WIDTH = 0.002
-SHOULDER_CLEARANCE = 0.001
+CORE_CLEARANCE = 0.001
 
 Vec3 = Tuple[float, float, float]
 Quat = Tuple[float, float, float, float]
@@ -96,8 +98,8 @@ def _vector(text: Optional[str]) -> np.ndarray:
 
 def crown_wheels(link: ET.Element, axis: np.ndarray) -> None:
     """Replaces each collision cylinder of ``link`` whose own axis is ``axis`` (a wheel)
-    by a crowned one: a tread at full radius in the middle and two shoulders
-    SHOULDER_CLEARANCE smaller in radius (see the module's notes)."""
+    by a crowned one: a core as wide, CORE_CLEARANCE smaller in radius, and a tread at
+    full radius around its middle (see the module's notes)."""
     for collision in link.findall("collision"):
         cylinder = collision.find("geometry/cylinder")
         if cylinder is None:
@@ -108,17 +110,13 @@ def crown_wheels(link: ET.Element, axis: np.ndarray) -> None:
         along = rpy_matrix(*rpy)[:, 2]  # a URDF cylinder's axis is its frame's z
         length, radius = float(cylinder.get("length")), float(cylinder.get("radius"))
         if abs(float(along @ axis)) < 0.999 or length <= 2 * TREAD_WIDTH \
-                or radius <= 2 * SHOULDER_CLEARANCE:
+                or radius <= 2 * CORE_CLEARANCE:
             continue
-        shoulder = (length - TREAD_WIDTH) / 2
-        shoulder_offset = (TREAD_WIDTH + shoulder) / 2
-        pieces = [(xyz, TREAD_WIDTH, radius),
-                  (xyz + along * shoulder_offset, shoulder, radius - SHOULDER_CLEARANCE),
-                  (xyz - along * shoulder_offset, shoulder, radius - SHOULDER_CLEARANCE)]
+        pieces = [(TREAD_WIDTH, radius), (length, radius - CORE_CLEARANCE)]
         link.remove(collision)
-        for centre, piece_length, piece_radius in pieces:
+        for piece_length, piece_radius in pieces:
             piece = ET.SubElement(link, "collision")
-            ET.SubElement(piece, "origin", xyz=" ".join(repr(float(v)) for v in centre),
+            ET.SubElement(piece, "origin", xyz=" ".join(repr(float(v)) for v in xyz),
                           rpy=" ".join(repr(float(v)) for v in rpy))
             geometry = ET.SubElement(piece, "geometry")
             ET.SubElement(geometry, "cylinder", length=repr(piece_length),

@@ -1,11 +1,11 @@
 """How sim_bridge hands a wheel's collision cylinder to pybullet: crowned (a tread at full
-radius, shoulders a little smaller), with nothing else about the robot changed."""
+radius around a core a little smaller), with nothing else about the robot changed."""
 import xml.etree.ElementTree as ET
 
 import numpy as np
 import pytest
 
-from sim_bridge.robot_body import SHOULDER_CLEARANCE, TREAD_WIDTH, crown_wheels
+from sim_bridge.robot_body import CORE_CLEARANCE, TREAD_WIDTH, crown_wheels
 
 
 def link_with(collisions):
@@ -22,19 +22,20 @@ def pieces(link):
     return found
 
 
-def test_a_wheel_cylinder_becomes_a_tread_between_two_shoulders():
-    link = link_with("<collision><origin xyz='0.1 0 0' rpy='1.5707963267948966 0 0'/>"
+def test_a_wheel_cylinder_becomes_a_tread_around_a_smaller_core():
+    rpy = "1.5707963267948966 0 0"
+    link = link_with(f"<collision><origin xyz='0.1 0 0' rpy='{rpy}'/>"
                      "<geometry><cylinder radius='0.12' length='0.07'/></geometry></collision>")
     crown_wheels(link, np.array([0.0, 1.0, 0.0]))
-    tread, *shoulders = pieces(link)
-    assert tread[0] == pytest.approx([0.1, 0, 0]) and tread[1:] == (TREAD_WIDTH, 0.12)
-    for centre, length, radius in shoulders:
-        assert radius == pytest.approx(0.12 - SHOULDER_CLEARANCE)
-        assert length == pytest.approx((0.07 - TREAD_WIDTH) / 2)
-        # side by side along the wheel's axis (y), together as wide as the wheel
-        assert centre[[0, 2]] == pytest.approx([0.1, 0])
-        assert abs(centre[1]) + length / 2 == pytest.approx(0.035)
-    assert sorted(np.sign(c[1]) for c, _, _ in shoulders) == [-1, 1]
+    tread, core = pieces(link)
+    assert tread[1:] == (TREAD_WIDTH, 0.12)
+    assert core[1:] == (0.07, pytest.approx(0.12 - CORE_CLEARANCE))
+    # both where the wheel was, turned as it was
+    for centre, _, _ in (tread, core):
+        assert centre == pytest.approx([0.1, 0, 0])
+    for collision in link.findall("collision"):
+        turned = [float(v) for v in collision.find("origin").get("rpy").split()]
+        assert turned == pytest.approx([float(v) for v in rpy.split()])
 
 
 def test_a_cylinder_across_the_joint_axis_and_other_shapes_stay_as_they_are():
