@@ -8,7 +8,7 @@ import rostest
 from geometry_msgs.msg import Twist
 
 from sim_bridge.srv import GetModelState, GetWorldProperties
-from sim_bridge.testing import TIMEOUT, wait_until
+from sim_bridge.testing import service_proxy, wait_until
 
 CONE = (-3.0, 0.0)
 
@@ -16,9 +16,8 @@ CONE = (-3.0, 0.0)
 class DriveToCone(unittest.TestCase):
     def test_drives_one_metre_towards_the_cone(self):
         rospy.init_node("drive_to_cone_check")
-        rospy.wait_for_service("/gazebo/get_model_state", timeout=TIMEOUT)
-        state = rospy.ServiceProxy("/gazebo/get_model_state", GetModelState)
-        clock = rospy.ServiceProxy("/gazebo/get_world_properties", GetWorldProperties)
+        state = service_proxy("/gazebo/get_model_state", GetModelState)
+        clock = service_proxy("/gazebo/get_world_properties", GetWorldProperties)
         wait_until(lambda: state("dd_robot", "").success, "dd_robot to be spawned")
         wait_until(lambda: clock().sim_time > 1.0, "it to settle")
 

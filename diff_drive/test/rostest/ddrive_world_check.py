@@ -13,15 +13,14 @@ from std_srvs.srv import Empty
 
 from sim_bridge.poses import quaternion_matrix
 from sim_bridge.srv import GetModelState, GetWorldProperties
-from sim_bridge.testing import TIMEOUT, wait_until
+from sim_bridge.testing import service_proxy, wait_until
 
 class DdriveWorld(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         rospy.init_node("ddrive_world_check")
-        rospy.wait_for_service("/gazebo/get_world_properties", timeout=TIMEOUT)
-        cls.properties = rospy.ServiceProxy("/gazebo/get_world_properties", GetWorldProperties)
-        cls.get_state = rospy.ServiceProxy("/gazebo/get_model_state", GetModelState)
+        cls.properties = service_proxy("/gazebo/get_world_properties", GetWorldProperties)
+        cls.get_state = service_proxy("/gazebo/get_model_state", GetModelState)
         cls.clock = []
         rospy.Subscriber("/clock", Clock, lambda m: cls.clock.append(m.clock.to_sec()))
         cls.odometry = None

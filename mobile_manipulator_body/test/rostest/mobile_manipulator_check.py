@@ -14,7 +14,7 @@ from nav_msgs.msg import Odometry
 from sensor_msgs.msg import JointState
 
 from sim_bridge.srv import GetModelState, GetWorldProperties
-from sim_bridge.testing import TIMEOUT, wait_until
+from sim_bridge.testing import TIMEOUT, service_proxy, wait_until
 
 JOINTS = ["arm_base_joint", "shoulder_joint", "bottom_wrist_joint", "elbow_joint", "top_wrist_joint"]
 MOVE = ("rostopic pub /arm_controller/command trajectory_msgs/JointTrajectory '{joint_names: "
@@ -32,8 +32,8 @@ class MobileManipulator(unittest.TestCase):
         listing = rospy.ServiceProxy("/controller_manager/list_controllers", ListControllers)
         wait_until(lambda: sum(c.state == "running" for c in listing().controller) == 3,
                    "the spawner to start three controllers")
-        cls.state = rospy.ServiceProxy("/gazebo/get_model_state", GetModelState)
-        cls.world = rospy.ServiceProxy("/gazebo/get_world_properties", GetWorldProperties)
+        cls.state = service_proxy("/gazebo/get_model_state", GetModelState)
+        cls.world = service_proxy("/gazebo/get_world_properties", GetWorldProperties)
 
     def arm_at(self, targets):
         if self.joints is None:

@@ -7,7 +7,7 @@ import rospy
 from sim_bridge.msg import ModelStates
 from sim_bridge.poses import rpy_from_quaternion
 from sim_bridge.srv import GetModelState, GetWorldProperties
-from sim_bridge.testing import TIMEOUT, wait_until  # noqa: F401 (the tests import them from here)
+from sim_bridge.testing import TIMEOUT, service_proxy, wait_until  # noqa: F401 (the tests import them from here)
 
 ROBOT = "my_rb1"
 START = (-5.0, 0.0)  # the start area's centre in the warehouse
@@ -18,9 +18,8 @@ class Truth:
     turns count)."""
 
     def __init__(self):
-        rospy.wait_for_service("/gazebo/get_model_state", timeout=TIMEOUT)
-        self.get_state = rospy.ServiceProxy("/gazebo/get_model_state", GetModelState)
-        self.properties = rospy.ServiceProxy("/gazebo/get_world_properties", GetWorldProperties)
+        self.get_state = service_proxy("/gazebo/get_model_state", GetModelState)
+        self.properties = service_proxy("/gazebo/get_world_properties", GetWorldProperties)
         wait_until(lambda: ROBOT in self.properties().model_names, "the RB1 to be spawned")
         self._lock = threading.Lock()
         self.total_yaw = None

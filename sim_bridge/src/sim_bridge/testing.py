@@ -18,3 +18,10 @@ def wait_until(condition, what: str, timeout: float = TIMEOUT, interval: float =
         if time.monotonic() > end:
             raise AssertionError(f"timed out after {timeout:.0f} s waiting for {what}")
         time.sleep(interval)
+
+
+def service_proxy(name: str, service_class, timeout: float = TIMEOUT) -> rospy.ServiceProxy:
+    """A proxy for ``name`` once the service is there (the simulator advertises its
+    services one after another: one being up says nothing of the next)."""
+    rospy.wait_for_service(name, timeout=timeout)
+    return rospy.ServiceProxy(name, service_class)

@@ -12,16 +12,15 @@ from nav_msgs.msg import Odometry
 
 from sim_bridge.poses import yaw_from_quaternion
 from sim_bridge.srv import GetModelState, GetWorldProperties
-from sim_bridge.testing import TIMEOUT, wait_until
+from sim_bridge.testing import service_proxy, wait_until
 
 
 class DriveAndTurn(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         rospy.init_node("drive_and_turn_check")
-        rospy.wait_for_service("/gazebo/get_model_state", timeout=TIMEOUT)
-        cls.state = rospy.ServiceProxy("/gazebo/get_model_state", GetModelState)
-        cls.world = rospy.ServiceProxy("/gazebo/get_world_properties", GetWorldProperties)
+        cls.state = service_proxy("/gazebo/get_model_state", GetModelState)
+        cls.world = service_proxy("/gazebo/get_world_properties", GetWorldProperties)
         cls.command = rospy.Publisher("/cmd_vel", Twist, queue_size=1, latch=True)
         cls.odometry = None
         rospy.Subscriber("/odom", Odometry, lambda m: setattr(cls, "odometry", m))
