@@ -17,6 +17,7 @@ from geometry_msgs.msg import Twist
 from diff_drive.flip import (FlipSettings, commanded_speed, load_defaults,
                              packaged_settings_path)
 from sim_bridge.local_bus import LocalBus
+from sim_bridge.poses import quaternion_from_rpy
 from sim_bridge.sdf_world import load_world
 from sim_bridge.snapshots import render, write_gif, write_ppm
 from sim_bridge.world import World
@@ -40,8 +41,7 @@ def render_flip(output: str, seconds: float) -> int:
     try:
         world.load_world(load_world(os.path.join(package, "worlds", "ddrive.world")))
         world.spawn_urdf("ddrive", expand(os.path.join(package, "urdf", "ddrive.urdf.xacro")),
-                         SPAWN_POSITION, (0.0, 0.0, math.sin(SPAWN_YAW / 2),
-                                          math.cos(SPAWN_YAW / 2)))
+                         SPAWN_POSITION, quaternion_from_rpy(0.0, 0.0, SPAWN_YAW))
         command = Twist()
         steps_per_frame = int(round(FRAME_SECONDS / world.step_size))
         with tempfile.TemporaryDirectory() as folder:

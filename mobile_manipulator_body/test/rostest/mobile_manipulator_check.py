@@ -14,7 +14,7 @@ from nav_msgs.msg import Odometry
 from sensor_msgs.msg import JointState
 
 from sim_bridge.srv import GetModelState, GetWorldProperties
-from sim_bridge.testing import TIMEOUT, service_proxy, wait_until
+from sim_bridge.testing import service_proxy, wait_until
 
 JOINTS = ["arm_base_joint", "shoulder_joint", "bottom_wrist_joint", "elbow_joint", "top_wrist_joint"]
 MOVE = ("rostopic pub /arm_controller/command trajectory_msgs/JointTrajectory '{joint_names: "
@@ -28,8 +28,7 @@ class MobileManipulator(unittest.TestCase):
         rospy.init_node("mobile_manipulator_check")
         cls.joints = None
         rospy.Subscriber("/joint_states", JointState, lambda m: setattr(cls, "joints", m))
-        rospy.wait_for_service("/controller_manager/list_controllers", timeout=TIMEOUT)
-        listing = rospy.ServiceProxy("/controller_manager/list_controllers", ListControllers)
+        listing = service_proxy("/controller_manager/list_controllers", ListControllers)
         wait_until(lambda: sum(c.state == "running" for c in listing().controller) == 3,
                    "the spawner to start three controllers")
         cls.state = service_proxy("/gazebo/get_model_state", GetModelState)

@@ -127,10 +127,11 @@ def prepare_urdf(xml: str, model: RobotModel, tags: GazeboTags, warn) -> str:
     """The URDF text pybullet should load (see the module's notes)."""
     root = ET.fromstring(xml)
     for link in root.findall("link"):
-        axis = _rotation_axis(model, link.get("name", ""))
+        name = link.get("name", "")
+        axis = _rotation_axis(model, name)
         if axis is not None:
             crown_wheels(link, axis)
-        caster = _is_caster(tags, link.get("name", ""))
+        caster = _is_caster(tags, name)
         for geometry in link.findall("collision/geometry"):
             for sphere in geometry.findall("sphere") if caster else ():
                 radius = float(sphere.get("radius", "0"))

@@ -6,6 +6,7 @@ import pybullet as pb
 import pytest
 from geometry_msgs.msg import Twist
 
+from sim_bridge.poses import quaternion_from_rpy
 from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec
 from sim_bridge.world import SimError
 
@@ -276,8 +277,8 @@ def wheel_loads(world, name):
 def test_a_robot_stands_on_both_wheels_alike_whatever_its_heading(world, diff_bot_xml,
                                                                     heading_degrees):
     # a rigid cylinder keeps one edge of its contact line; the crowned wheel its middle
-    half = math.radians(heading_degrees) / 2
-    world.spawn_urdf("bot", diff_bot_xml(), (0, 0, 0), (0, 0, math.sin(half), math.cos(half)))
+    heading = quaternion_from_rpy(0.0, 0.0, math.radians(heading_degrees))
+    world.spawn_urdf("bot", diff_bot_xml(), (0, 0, 0), heading)
     run(world, 1.0)
     left, right = wheel_loads(world, "bot")
     assert left > 1.0 and right > 1.0
