@@ -1,6 +1,6 @@
 """``make bench``: sim_bridge's speed and memory, measured in one run, printed as a table.
 
-The scene (sim_bridge/bench/): a closed hall with 40 static objects and an RB1-class robot
+The scene (tools/bench/): a closed hall with 40 static objects and an RB1-class robot
 (diff drive, 720-beam laser at 20 Hz), driving in a circle while measured.
 
   max real-time factor, ROS     roslaunch bench.launch real_time_factor:=0; simulated
@@ -54,7 +54,7 @@ def simulator_pid() -> Optional[int]:
                 command = stream.read().split(b"\0")
         except OSError:
             continue
-        if any(part.endswith(b"sim_bridge/sim_bridge") for part in command) and \
+        if any(part.endswith(b"gazebo_ros/gzserver") for part in command) and \
                 b"__name:=gazebo" in command:
             return int(entry)
     return None
@@ -110,7 +110,7 @@ def measure_ros(env: Dict[str, str], probe: RosProbe, real_time_factor: str) -> 
     probe.reset()
     log = os.path.join(OUTPUT, f"bench_rtf{real_time_factor}.log")
     started = time.monotonic()
-    with headless.roslaunch(["sim_bridge", "bench.launch",
+    with headless.roslaunch([os.path.join(REPO, "tools", "bench", "bench.launch"),
                              f"real_time_factor:={real_time_factor}"], env, log) as launch:
         headless.wait_until(lambda: probe.first_scan_wall is not None or not launch.running(),
                             60, "the first /scan")
@@ -168,7 +168,7 @@ def measure_bare() -> float:
 
     bus = NullBus()
     world = World(bus)
-    world.load_world(load_world(os.path.join(REPO, "sim_bridge", "bench", "bench.world")))
+    world.load_world(load_world(os.path.join(REPO, "tools", "bench", "bench.world")))
     xml = expand(os.path.join(REPO, "sim_bridge", "test", "data", "diff_bot.urdf.xacro"),
                  {"laser_samples": "720", "laser_half_fov_degrees": "135"})
     model = world.spawn_urdf("rb1_class", xml)

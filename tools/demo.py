@@ -55,7 +55,7 @@ def main() -> int:
             from std_srvs.srv import Empty
 
             from my_rb1_ros.srv import Rotate
-            from sim_bridge.srv import GetModelState
+            from gazebo_msgs.srv import GetModelState
 
             headless.wait_until(lambda: rosgraph.is_master_online() or not launch.running(),
                                 TIMEOUT, "the ROS master")

@@ -48,8 +48,14 @@ class Tally:
         self.failures += other.failures
 
 
+# Where packages live: the top level (the course solutions, the simulator) and compat/ (the
+# Gazebo stack's names).
+PACKAGE_DIRS = ("*", os.path.join("compat", "*"))
+
+
 def packages() -> List[str]:
-    found = glob.glob(os.path.join(REPO, "*", "package.xml"))
+    found = [p for pattern in PACKAGE_DIRS
+             for p in glob.glob(os.path.join(REPO, pattern, "package.xml"))]
     return sorted(os.path.dirname(p) for p in found)
 
 
@@ -90,12 +96,12 @@ def run_pytest(tier: str, paths: List[str], keyword: str) -> Tally:
 
 def run_rostests(keyword: str) -> Tally:
     tally = Tally()
-    test_files = sorted(glob.glob(os.path.join(REPO, "*", "test", "rostest", "*.test")) +
-                        glob.glob(os.path.join(REPO, "*", "test", "*.test")))
+    test_files = sorted((os.path.basename(package), test_file) for package in packages()
+                        for pattern in (("rostest", "*.test"), ("*.test",))
+                        for test_file in glob.glob(os.path.join(package, "test", *pattern)))
     if keyword:
-        test_files = [f for f in test_files if keyword in os.path.basename(f)]
-    for test_file in test_files:
-        package = os.path.relpath(test_file, REPO).split(os.sep)[0]
+        test_files = [(p, f) for p, f in test_files if keyword in os.path.basename(f)]
+    for package, test_file in test_files:
         name = os.path.splitext(os.path.basename(test_file))[0]
         ros_home = os.path.join(RESULTS, "rostest", package, name)
         shutil.rmtree(ros_home, ignore_errors=True)

@@ -21,7 +21,8 @@ check_platform
 # What each group is for: ROS 1 runtime and build, message bindings (Python) and their CMake
 # configs (lib*-msgs-dev, for packages that generate messages), rostest's CMake config (so
 # that `catkin_make run_tests` runs the packages' add_rostest tests), the robot tools,
-# headless rviz, the venv.
+# headless rviz, the venv; what course packages build against (C++ nodes: roscpp, tf, urdf and
+# the message headers; Python nodes: tf.transformations).
 apt_packages=(
   catkin catkin-lint python3-catkin-pkg ros-message-generation ros-message-runtime
   python3-genpy python3-genmsg cmake make g++
@@ -34,6 +35,8 @@ apt_packages=(
   python3-tf2-msgs python3-rospkg
   libstd-msgs-dev libgeometry-msgs-dev libtrajectory-msgs-dev libactionlib-msgs-dev
   librostest-dev
+  python3-tf libroscpp-dev liburdf-dev libtf-dev libtf2-ros-dev libtf2-geometry-msgs-dev
+  libsensor-msgs-dev libnav-msgs-dev libstd-srvs-dev libroslib-dev python3-pyqt5
   ros-robot-state-publisher joint-state-publisher joint-state-publisher-gui rviz
   liburdfdom-tools
   xvfb xauth x11-utils xdotool imagemagick
@@ -96,7 +99,7 @@ export PATH="/usr/bin:/bin:$PATH"
 log="$ws/catkin_make.log"
 if (cd "$ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON \
       >"$log" 2>&1); then
-  echo "setup: catkin build: ok ($(ls -d "$repo"/*/package.xml | wc -l) packages; log $log)"
+  echo "setup: catkin build: ok ($(ls -d "$repo"/*/package.xml "$repo"/compat/*/package.xml | wc -l) packages; log $log)"
 else
   tail -n 40 "$log" >&2
   echo "setup: catkin build failed; the whole log is $log" >&2

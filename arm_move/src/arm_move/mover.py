@@ -243,8 +243,8 @@ class Mover:
         """Moves the simulated box too, when a simulator answers (not on the fake or the
         real robot): its pose in the world is the arm's base frame raised by the table."""
         try:
-            from sim_bridge.msg import ModelState
-            from sim_bridge.srv import SetModelState
+            from gazebo_msgs.msg import ModelState
+            from gazebo_msgs.srv import SetModelState
             rospy.wait_for_service("/gazebo/set_model_state", timeout=0.5)
         except (ImportError, rospy.ROSException):
             return

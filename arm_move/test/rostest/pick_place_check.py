@@ -13,9 +13,9 @@ import rostest
 from arm_move.msg import MoveItErrorCodes as Codes
 from arm_move.srv import Follow, Reset
 from geometry_msgs.msg import Point, Pose, Quaternion
-from sim_bridge.msg import ModelStates
+from gazebo_msgs.msg import ModelStates
 from sim_bridge.poses import yaw_from_quaternion
-from sim_bridge.srv import GetModelState
+from gazebo_msgs.srv import GetModelState
 
 TABLE_HEIGHT = 0.75
 DROP_OFF = (0.17, -0.02)       # in px100/base_link, as the last waypoints of the yaml

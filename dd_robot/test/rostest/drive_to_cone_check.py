@@ -7,7 +7,7 @@ import rospy
 import rostest
 from geometry_msgs.msg import Twist
 
-from sim_bridge.srv import GetModelState, GetWorldProperties
+from gazebo_msgs.srv import GetModelState, GetWorldProperties
 from sim_bridge.testing import service_proxy, wait_until
 
 CONE = (-3.0, 0.0)

@@ -12,7 +12,7 @@ from rosgraph_msgs.msg import Clock
 from std_srvs.srv import Empty
 
 from sim_bridge.poses import quaternion_matrix
-from sim_bridge.srv import GetModelState, GetWorldProperties
+from gazebo_msgs.srv import GetModelState, GetWorldProperties
 from sim_bridge.testing import service_proxy, wait_until
 
 class DdriveWorld(unittest.TestCase):

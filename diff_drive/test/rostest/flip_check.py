@@ -12,7 +12,7 @@ import rostest
 from geometry_msgs.msg import Twist
 
 from diff_drive.flip import FlipCounter, up_axis_z
-from sim_bridge.msg import ModelStates
+from gazebo_msgs.msg import ModelStates
 from sim_bridge.poses import yaw_from_quaternion
 from sim_bridge.testing import wait_until
 

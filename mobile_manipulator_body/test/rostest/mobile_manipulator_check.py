@@ -13,7 +13,7 @@ from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import JointState
 
-from sim_bridge.srv import GetModelState, GetWorldProperties
+from gazebo_msgs.srv import GetModelState, GetWorldProperties
 from sim_bridge.testing import service_proxy, wait_until
 
 JOINTS = ["arm_base_joint", "shoulder_joint", "bottom_wrist_joint", "elbow_joint", "top_wrist_joint"]

@@ -4,9 +4,9 @@ import threading
 
 import rospy
 
-from sim_bridge.msg import ModelStates
+from gazebo_msgs.msg import ModelStates
 from sim_bridge.poses import rpy_from_quaternion
-from sim_bridge.srv import GetModelState, GetWorldProperties
+from gazebo_msgs.srv import GetModelState, GetWorldProperties
 from sim_bridge.testing import TIMEOUT, service_proxy, wait_until  # noqa: F401 (the tests import them from here)
 
 ROBOT = "my_rb1"

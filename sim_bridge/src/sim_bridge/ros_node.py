@@ -19,7 +19,7 @@ import subprocess
 import threading
 import time
 from dataclasses import dataclass
-from typing import Any, Callable, Dict
+from typing import Any, Callable, Dict, Optional
 
 import numpy as np
 import pybullet as pb
@@ -29,11 +29,11 @@ from rosgraph_msgs.msg import Clock
 from std_srvs.srv import Empty, EmptyResponse
 from tf2_msgs.msg import TFMessage
 
-from sim_bridge.msg import ModelStates
+from gazebo_msgs.msg import ModelStates
 from sim_bridge.plugins.base import Bus, PluginError
 from sim_bridge.poses import quaternion_matrix
 from sim_bridge.sdf_world import SdfError, load_world, parse_model
-from sim_bridge.srv import (DeleteModel, DeleteModelResponse, GetModelState,
+from gazebo_msgs.srv import (DeleteModel, DeleteModelResponse, GetModelState,
                             GetModelStateResponse, GetWorldProperties,
                             GetWorldPropertiesResponse, SetModelConfiguration,
                             SetModelConfigurationResponse, SetModelState, SetModelStateResponse,
@@ -59,11 +59,17 @@ class Config:
     pub_clock_frequency: float = 250.0
     model_states_frequency: float = 50.0
     ray_threads: int = 0
+    # false: no /gazebo services or topics (gazebo_ros's enable_ros_network); /clock stays
+    enable_ros_network: bool = True
 
     @classmethod
-    def from_parameters(cls) -> "Config":
-        config = cls(**{name: rospy.get_param("~" + name, default)
-                        for name, default in cls().__dict__.items()})
+    def from_parameters(cls, overrides: Optional[Dict[str, Any]] = None) -> "Config":
+        """Private parameters over the defaults, and ``overrides`` (the command line that
+        gzserver was given) over both."""
+        values = {name: rospy.get_param("~" + name, default)
+                  for name, default in cls().__dict__.items()}
+        values.update(overrides or {})
+        config = cls(**values)
         if config.real_time_factor < 0 or not math.isfinite(config.real_time_factor):
             raise ValueError(f"~real_time_factor must be 0 (as fast as possible) or positive, "
                              f"not {config.real_time_factor}")
@@ -204,8 +210,12 @@ class SimBridgeNode:
         self._pace_anchor = None
 
     # --- set-up -------------------------------------------------------------------------
-    def advertise(self) -> None:
+    def advertise_clock(self) -> None:
         self.clock = rospy.Publisher("/clock", Clock, queue_size=10)
+        self.model_states = None
+
+    def advertise(self) -> None:
+        self.advertise_clock()
         self.model_states = rospy.Publisher("~model_states", ModelStates, queue_size=1)
         services = [
             ("spawn_urdf_model", SpawnModel, self._spawn_urdf),
@@ -391,7 +401,7 @@ class SimBridgeNode:
                 self._next_clock_ns = now_ns + self.clock_period_ns
             if now_ns >= self._next_states_ns:
                 # as gazebo_ros: only when someone listens (41 poses cost ~0.4 ms)
-                if self.model_states.get_num_connections() > 0:
+                if self.model_states and self.model_states.get_num_connections() > 0:
                     self._publish_model_states()
                 self._next_states_ns = now_ns + self.states_period_ns
             self._pace()
@@ -411,17 +421,23 @@ def build_world(config: Config, bus: Bus) -> World:
     return world
 
 
-def main() -> None:
-    rospy.init_node("gazebo")
+def main(overrides: Optional[Dict[str, Any]] = None, log_level: int = rospy.INFO) -> None:
+    """The simulator node; ``overrides`` take precedence over its parameters (gazebo_ros's
+    gzserver passes what its command line says)."""
+    rospy.init_node("gazebo", log_level=log_level)
     physics = PhysicsThread()
     try:
-        config = Config.from_parameters()
+        config = Config.from_parameters(overrides)
         world = build_world(config, RosBus(physics))
     except (ValueError, SdfError) as error:
         rospy.logfatal(f"sim_bridge cannot start: {error}")
         raise SystemExit(1) from None
     node = SimBridgeNode(config, world, physics)
-    node.advertise()
+    if config.enable_ros_network:
+        node.advertise()
+    else:
+        node.advertise_clock()
+        rospy.loginfo("enable_ros_network is false: no /gazebo services or topics")
     rospy.loginfo(f"sim_bridge ready (real_time_factor {config.real_time_factor:g}, "
                   f"{'paused' if world.paused else 'running'})")
     try:

@@ -306,8 +306,24 @@ def _parse(path: str) -> ET.Element:
         raise SdfError(f"{path}: cannot be read: {error.strerror}") from None
 
 
+def resolve_world_name(name: str) -> str:
+    """A world file as gzserver finds it: an absolute path or one relative to the current
+    folder as it is, else relative to a folder of GAZEBO_RESOURCE_PATH (gazebo_ros's
+    default, ``worlds/empty.world``, is found this way)."""
+    if os.path.isabs(name) or os.path.isfile(name):
+        return name
+    folders = [p for p in os.environ.get("GAZEBO_RESOURCE_PATH", "").split(os.pathsep) if p]
+    for folder in folders:
+        candidate = os.path.join(folder, name)
+        if os.path.isfile(candidate):
+            return candidate
+    raise SdfError(f"world '{name}' is not a file, here or in GAZEBO_RESOURCE_PATH "
+                   f"({os.pathsep.join(folders) or 'unset'})")
+
+
 def load_world(path: str) -> WorldSpec:
-    """Reads a .world file."""
+    """Reads a .world file (``path`` as :func:`resolve_world_name` resolves it)."""
+    path = resolve_world_name(path)
     root = _parse(path)
     world = root.find("world") if root.tag == "sdf" else root
     if world is None or world.tag != "world":

@@ -11,7 +11,7 @@ from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 
 from sim_bridge.poses import yaw_from_quaternion
-from sim_bridge.srv import GetModelState, GetWorldProperties
+from gazebo_msgs.srv import GetModelState, GetWorldProperties
 from sim_bridge.testing import service_proxy, wait_until
 
 

@@ -1,0 +1,92 @@
+"""gazebo_ros's gzserver, gazebo and debug node types: Gazebo's command line, run by sim_bridge.
+
+Launch files start the simulator as ``<node pkg="gazebo_ros" type="gzserver" args="-u -e ode
+worlds/empty.world"/>`` (empty_world.launch does). This reads that command line as gzserver
+does and hands what it means to sim_bridge's node:
+
+  -u, --pause             start with physics paused
+  --verbose               log at debug level
+  -e, --physics ENGINE    accepted: sim_bridge simulates with Bullet whatever is asked
+  -r, --record, --record_path, --record_encoding, --record_period, --record_filter
+                          accepted; Gazebo's log recording is not emulated (one warning)
+  -s, --server-plugin, -g, --gui-plugin PLUGIN
+                          accepted: gazebo_ros's own plugins are what sim_bridge is
+  --seed N                seed of the simulated noise
+  WORLD                   the world file (relative names are looked up in the current folder,
+                          then GAZEBO_RESOURCE_PATH, which includes this package's worlds)
+
+Other options are reported once and ignored; the last word that is not an option is the
+world, as for gzserver.
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from typing import Any, Dict, List, Optional, Tuple
+
+import rospkg
+import rospy
+
+# Options that take a value and mean nothing here.
+IGNORED_WITH_VALUE = ("-s", "--server-plugin", "-g", "--gui-plugin", "--record_path",
+                      "--record_encoding", "--record_period", "--record_filter", "--iters",
+                      "-o", "--profile")
+IGNORED_FLAGS = ("-q", "--quiet", "--lockstep", "--minimal_comms", "--play")
+
+
+def parse_command_line(argv: List[str]) -> Tuple[Dict[str, Any], int, List[str]]:
+    """(overrides for sim_bridge's Config, rospy log level, notes for the log)."""
+    parser = argparse.ArgumentParser(prog="gzserver", add_help=False)
+    parser.add_argument("-u", "--pause", action="store_true")
+    parser.add_argument("--verbose", action="store_true")
+    parser.add_argument("-e", "--physics", default="ode")
+    parser.add_argument("--seed", type=int)
+    parser.add_argument("-r", "--record", action="store_true")
+    for flag in IGNORED_FLAGS:
+        parser.add_argument(flag, action="store_true")
+    for option in IGNORED_WITH_VALUE:
+        parser.add_argument(option, action="append", default=[])
+    args, rest = parser.parse_known_args(argv)
+    overrides: Dict[str, Any] = {}
+    notes: List[str] = []
+    words = [word for word in rest if word]
+    worlds = [word for word in words if not word.startswith("-")]
+    unknown = [word for word in words if word.startswith("-")]
+    if worlds:
+        overrides["world_name"] = worlds[-1]
+    if args.pause:
+        overrides["paused"] = True
+    if args.seed is not None:
+        overrides["seed"] = args.seed
+    if args.record or args.record_path:
+        notes.append("recording a Gazebo log (-r) is not emulated; the run is not recorded")
+    if args.physics not in ("ode", "bullet"):
+        notes.append(f"physics engine '{args.physics}' asked for; sim_bridge simulates with "
+                     "Bullet")
+    if unknown:
+        notes.append(f"ignored gzserver options: {' '.join(unknown)}")
+    return overrides, (rospy.DEBUG if args.verbose else rospy.INFO), notes
+
+
+def add_resource_path() -> None:
+    """Puts this package's share folder on GAZEBO_RESOURCE_PATH, as Gazebo's setup.sh puts
+    /usr/share/gazebo-11, so that ``worlds/empty.world`` resolves."""
+    here = rospkg.RosPack().get_path("gazebo_ros")
+    paths = [p for p in os.environ.get("GAZEBO_RESOURCE_PATH", "").split(os.pathsep) if p]
+    if here not in paths:
+        os.environ["GAZEBO_RESOURCE_PATH"] = os.pathsep.join(paths + [here])
+
+
+def main(argv: Optional[List[str]] = None, gui: Optional[bool] = None) -> None:
+    """gzserver (``gui`` None: the ``~gui`` parameter decides) or gazebo (``gui`` True)."""
+    from sim_bridge import ros_node  # the engine; imported late so --help stays fast
+
+    overrides, log_level, notes = parse_command_line(
+        rospy.myargv(argv if argv is not None else sys.argv)[1:])
+    if gui is not None:
+        overrides["gui"] = gui
+    add_resource_path()
+    for note in notes:
+        print(f"gzserver: {note}", file=sys.stderr)
+    ros_node.main(overrides, log_level)

@@ -1,0 +1,190 @@
+"""``rosrun gazebo_ros spawn_model``: gazebo_ros's spawn_model, with its flags.
+
+  -urdf | -sdf            the description's format
+  -file FILE | -param P | -topic T | -database NAME | -stdin
+                          where it is: a file, a parameter (robot_description), a latched
+                          std_msgs/String topic, a model of the model path (model://NAME),
+                          or standard input
+  -model NAME             the model's name (required)
+  -x -y -z -R -P -Y       initial pose (m, rad)
+  -J JOINT VALUE          initial joint position (repeatable)
+  -unpause                unpause physics once spawned
+  -wait MODEL             wait until MODEL exists before spawning
+  -robot_namespace NS     namespace of the model's plugins (default: this node's namespace)
+  -reference_frame FRAME  the pose's frame ("" or "world" for the world)
+  -gazebo_namespace NS    the simulator's namespace (/gazebo)
+  -package_to_model       turn package:// mesh URIs into model:// ones
+  -timeout SECONDS        how long to wait for the simulator, a parameter or a model (60)
+  -b                      stay, and delete the model when this node stops
+Exit status 0 once spawned; 1 with a message naming the cause otherwise.
+"""
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+import time
+from typing import List, Optional
+
+import rospy
+from geometry_msgs.msg import Pose
+from std_msgs.msg import String
+from std_srvs.srv import Empty
+from tf.transformations import quaternion_from_euler
+
+from gazebo_msgs.srv import (DeleteModel, GetWorldProperties, SetModelConfiguration,
+                             SpawnModel)
+
+# What -database spawns: the model of that name from the model path, as upstream.
+DATABASE_TEMPLATE = """<sdf version="1.4">
+  <world name="default">
+    <include>
+      <uri>model://{}</uri>
+    </include>
+  </world>
+</sdf>"""
+# How often a waiting loop looks again (wall seconds).
+POLL_PERIOD = 0.1
+
+
+class SpawnError(Exception):
+    """A cause that stops the spawn, said to the user."""
+
+
+def parse_arguments(argv: List[str]) -> argparse.Namespace:
+    parser = argparse.ArgumentParser(prog="spawn_model", description=__doc__.split("\n")[0])
+    kind = parser.add_mutually_exclusive_group(required=True)
+    kind.add_argument("-urdf", action="store_true")
+    kind.add_argument("-sdf", action="store_true")
+    source = parser.add_mutually_exclusive_group(required=True)
+    source.add_argument("-file")
+    source.add_argument("-param")
+    source.add_argument("-topic")
+    source.add_argument("-database")
+    source.add_argument("-stdin", action="store_true")
+    parser.add_argument("-model", required=True)
+    for axis in ("x", "y", "z", "R", "P", "Y"):
+        parser.add_argument(f"-{axis}", type=float, default=0.0)
+    parser.add_argument("-J", nargs=2, action="append", default=[], metavar=("JOINT", "VALUE"))
+    parser.add_argument("-unpause", action="store_true")
+    parser.add_argument("-wait", default="")
+    parser.add_argument("-robot_namespace", default=None)
+    parser.add_argument("-reference_frame", default="")
+    parser.add_argument("-gazebo_namespace", default="/gazebo")
+    parser.add_argument("-package_to_model", action="store_true")
+    parser.add_argument("-timeout", type=float, default=60.0)
+    parser.add_argument("-b", action="store_true")
+    return parser.parse_args(argv)
+
+
+def _wait(condition, what: str, timeout: float):
+    """``condition()``'s first true value, polled until ``timeout`` wall seconds pass."""
+    deadline = time.monotonic() + timeout
+    while not rospy.is_shutdown():
+        value = condition()
+        if value:
+            return value
+        if time.monotonic() > deadline:
+            raise SpawnError(f"{what} (waited {timeout:g} s)")
+        time.sleep(POLL_PERIOD)
+    raise SpawnError("shut down while waiting")
+
+
+def read_description(args: argparse.Namespace) -> str:
+    if args.file:
+        try:
+            with open(args.file, encoding="utf-8") as stream:
+                xml = stream.read()
+        except OSError as error:
+            raise SpawnError(f"cannot read {args.file}: {error.strerror}") from None
+        where = f"file {args.file}"
+    elif args.param:
+        xml = _wait(lambda: rospy.has_param(args.param) and str(rospy.get_param(args.param)),
+                    f"parameter {args.param} is not set", args.timeout)
+        where = f"parameter {args.param}"
+    elif args.topic:
+        received: List[str] = []
+        rospy.Subscriber(args.topic, String, lambda message: received.append(message.data))
+        xml = _wait(lambda: received and received[-1],
+                    f"nothing was published on {args.topic}", args.timeout)
+        where = f"topic {args.topic}"
+    elif args.database:
+        return DATABASE_TEMPLATE.format(args.database)
+    else:
+        xml = sys.stdin.read()
+        where = "standard input"
+    if not xml.strip():
+        raise SpawnError(f"the {where} is empty")
+    return xml
+
+
+def package_to_model(xml: str) -> str:
+    """``package://pkg/...`` → ``model://pkg/...``, as upstream's -package_to_model."""
+    return re.sub(r"package://", "model://", xml)
+
+
+def wait_for_model(namespace: str, model: str, timeout: float) -> None:
+    properties = rospy.ServiceProxy(f"{namespace}/get_world_properties", GetWorldProperties)
+    _wait(lambda: model in properties().model_names,
+          f"model '{model}' did not appear", timeout)
+
+
+def initial_pose(args: argparse.Namespace) -> Pose:
+    pose = Pose()
+    pose.position.x, pose.position.y, pose.position.z = args.x, args.y, args.z
+    pose.orientation.x, pose.orientation.y, pose.orientation.z, pose.orientation.w = \
+        quaternion_from_euler(args.R, args.P, args.Y)
+    return pose
+
+
+def spawn(args: argparse.Namespace) -> None:
+    namespace = args.gazebo_namespace.rstrip("/")
+    try:
+        joints = [(name, float(value)) for name, value in args.J]
+    except ValueError:
+        raise SpawnError("-J takes a joint name and a number") from None
+    xml = read_description(args)
+    if args.package_to_model:
+        xml = package_to_model(xml)
+    service = f"{namespace}/spawn_{'urdf' if args.urdf else 'sdf'}_model"
+    try:
+        rospy.wait_for_service(service, timeout=args.timeout)
+    except rospy.ROSException:
+        raise SpawnError(f"service {service} not available after {args.timeout:g} s; is the "
+                         "simulator (gazebo_ros's empty_world.launch) running?") from None
+    if args.wait:
+        wait_for_model(namespace, args.wait, args.timeout)
+    robot_namespace = rospy.get_namespace() if args.robot_namespace is None \
+        else args.robot_namespace
+    response = rospy.ServiceProxy(service, SpawnModel)(
+        args.model, xml, robot_namespace, initial_pose(args), args.reference_frame)
+    if not response.success:
+        raise SpawnError(response.status_message)
+    rospy.loginfo(f"spawn_model: {response.status_message}")
+    if joints:
+        configured = rospy.ServiceProxy(f"{namespace}/set_model_configuration",
+                                        SetModelConfiguration)(
+            args.model, "", [name for name, _ in joints], [value for _, value in joints])
+        if not configured.success:
+            raise SpawnError(configured.status_message)
+    if args.unpause:
+        rospy.ServiceProxy(f"{namespace}/unpause_physics", Empty)()
+
+
+def main(argv: Optional[List[str]] = None) -> int:
+    arguments = rospy.myargv(argv if argv is not None else sys.argv)[1:]
+    args = parse_arguments(arguments)
+    rospy.init_node("spawn_model", anonymous=True)
+    try:
+        spawn(args)
+    except (SpawnError, rospy.ServiceException) as error:
+        print(f"spawn_model: {error}", file=sys.stderr)
+        return 1
+    if args.b:
+        rospy.spin()
+        try:
+            rospy.ServiceProxy(f"{args.gazebo_namespace.rstrip('/')}/delete_model",
+                               DeleteModel)(args.model)
+        except rospy.ServiceException:
+            pass
+    return 0

@@ -1,0 +1,67 @@
+#!/usr/bin/env python3
+"""rostest node: the diff drive moves the robot as commanded, in ground truth, and its
+odometry agrees (odometrySource from the ~odometry_source parameter)."""
+import math
+import os
+import sys
+import unittest
+
+import rospy
+import rostest
+from geometry_msgs.msg import Twist
+from nav_msgs.msg import Odometry
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sim_checks import Simulator, angle_difference, drive  # noqa: E402
+
+TOLERANCE = 0.02  # 2 %
+
+
+class Drive(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node("drive_check")
+        cls.sim = Simulator()
+        cls.sim.wait_for_model("diff_bot")
+        cls.command = rospy.Publisher("/cmd_vel", Twist, queue_size=1, latch=True)
+        cls.odometry = None
+        rospy.Subscriber("/odom", Odometry, cls._on_odometry, queue_size=1)
+        cls.sim.wait_sim_time(cls.sim.sim_time() + 0.5)  # let it settle on its wheels
+
+    @classmethod
+    def _on_odometry(cls, message):
+        cls.odometry = message
+
+    def test_1_straight_1_metre_in_5_seconds(self):
+        odom_before = self.odometry.pose.pose.position
+        elapsed, before, after = drive(self.sim, self.command, 0.2, 0.0, 5.0)
+        self.assertLess(abs(elapsed - 5.0), 0.05)
+        travelled = math.hypot(after[0] - before[0], after[1] - before[1])
+        self.assertAlmostEqual(travelled, 1.0, delta=1.0 * TOLERANCE)
+        # odometry, published at 50 Hz, read once the robot has stopped moving
+        self.sim.wait_sim_time(self.sim.sim_time() + 1.0)
+        stopped = self.sim.truth("diff_bot")
+        odom_after = self.odometry.pose.pose.position
+        true_run = math.hypot(stopped[0] - before[0], stopped[1] - before[1])
+        odom_run = math.hypot(odom_after.x - odom_before.x, odom_after.y - odom_before.y)
+        self.assertAlmostEqual(odom_run, true_run, delta=true_run * TOLERANCE)
+        self.assertGreater(self.odometry.twist.covariance[0], 0.0)
+
+    def test_2_turn_2_radians_in_4_seconds(self):
+        elapsed, before, after = drive(self.sim, self.command, 0.0, 0.5, 4.0)
+        self.assertLess(abs(elapsed - 4.0), 0.05)
+        turned = angle_difference(after[2], before[2])
+        self.assertAlmostEqual(turned, 2.0, delta=2.0 * TOLERANCE)
+
+    def test_3_frictionless_casters_do_not_pull_it_sideways(self):
+        elapsed, before, after = drive(self.sim, self.command, 0.4, 0.0, 5.0)
+        heading = before[2]
+        dx, dy = after[0] - before[0], after[1] - before[1]
+        along = dx * math.cos(heading) + dy * math.sin(heading)
+        sideways = -dx * math.sin(heading) + dy * math.cos(heading)
+        self.assertGreater(along, 1.9)
+        self.assertLess(abs(sideways), 0.02)
+
+
+if __name__ == "__main__":
+    rostest.rosrun("gazebo_ros", "drive", Drive)

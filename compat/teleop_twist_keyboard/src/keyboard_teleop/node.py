@@ -1,0 +1,57 @@
+"""The teleop node: reads keys from the terminal, publishes ``cmd_vel`` (remap it to drive
+another topic). The terminal goes to raw mode for single key presses and is restored on
+exit, also after Ctrl-C or an error. Private parameters: ``~speed`` (0.5 m/s), ``~turn``
+(1.0 rad/s), ``~repeat_rate`` (10 Hz: the command is republished this often)."""
+from __future__ import annotations
+
+import select
+import sys
+import termios
+import tty
+
+import rospy
+from geometry_msgs.msg import Twist
+
+from keyboard_teleop.keys import HELP, Teleop
+
+CTRL_C = "\x03"
+
+
+def read_key(stream, timeout: float) -> str:
+    ready, _, _ = select.select([stream], [], [], timeout)
+    return stream.read(1) if ready else ""
+
+
+def main() -> None:
+    rospy.init_node("teleop_twist_keyboard")
+    teleop = Teleop(float(rospy.get_param("~speed", 0.5)), float(rospy.get_param("~turn", 1.0)))
+    period = 1.0 / float(rospy.get_param("~repeat_rate", 10.0))
+    publisher = rospy.Publisher("cmd_vel", Twist, queue_size=1)
+    stdin = sys.stdin
+    if not stdin.isatty():
+        sys.exit("teleop_twist_keyboard: needs a terminal (run it with rosrun, or launch-prefix='xterm -e')")
+    saved = termios.tcgetattr(stdin)
+
+    def publish():
+        twist = Twist()
+        twist.linear.x, twist.angular.z = teleop.command
+        publisher.publish(twist)
+
+    print(HELP)
+    print(teleop.status(), flush=True)
+    try:
+        tty.setraw(stdin.fileno())
+        while not rospy.is_shutdown():
+            key = read_key(stdin, period)
+            if key == CTRL_C:
+                break
+            if key:
+                teleop.press(key)
+                sys.stdout.write("\r" + teleop.status() + "\r\n")
+                sys.stdout.flush()
+            publish()
+    finally:
+        teleop.press("k")
+        publish()
+        termios.tcsetattr(stdin, termios.TCSADRAIN, saved)
+        print("teleop_twist_keyboard: stopped; terminal restored", flush=True)

@@ -1,5 +1,0 @@
-"""Installs the display_tools Python package (catkin_python_setup)."""
-from catkin_pkg.python_setup import generate_distutils_setup
-from setuptools import setup
-
-setup(**generate_distutils_setup(packages=["display_tools"], package_dir={"": "src"}))

@@ -1,1 +1,0 @@
-"""Nodes that the robot packages' display launch files share."""
