@@ -4,6 +4,7 @@ exit, also after Ctrl-C or an error. Private parameters: ``~speed`` (0.5 m/s), `
 (1.0 rad/s), ``~repeat_rate`` (10 Hz: the command is republished this often)."""
 from __future__ import annotations
 
+import os
 import select
 import sys
 import termios
@@ -18,8 +19,11 @@ CTRL_C = "\x03"
 
 
 def read_key(stream, timeout: float) -> str:
+    """One key, or "" after ``timeout`` seconds. Read from the descriptor, not through
+    Python's buffered stream: keys typed together (``k`` then Ctrl-C) would otherwise wait
+    in the stream's buffer while select() sees nothing more to read."""
     ready, _, _ = select.select([stream], [], [], timeout)
-    return stream.read(1) if ready else ""
+    return os.read(stream.fileno(), 1).decode("utf-8", "replace") if ready else ""
 
 
 def main() -> None:

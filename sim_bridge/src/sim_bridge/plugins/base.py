@@ -99,10 +99,14 @@ class Plugin:
     def param(self, tag: str, default: Optional[str] = None) -> Optional[str]:
         return self.spec.text(tag, default)
 
-    def number(self, tag: str, default: float) -> float:
+    def number(self, tag: str, default: float, false_value: Optional[float] = None) -> float:
+        """The tag's number; ``false_value`` is what the word ``false`` means where Gazebo
+        reads it as a number (e.g. ``<wheelAcceleration>false</wheelAcceleration>`` is 0)."""
         text = self.spec.text(tag)
         if text is None or text == "":
             return default
+        if false_value is not None and text.strip().lower() == "false":
+            return false_value
         try:
             value = float(text)
         except ValueError:

@@ -3,7 +3,8 @@
 Parameters, names and defaults as gazebo_ros (noetic) reads them:
 
 leftJoint (left_joint), rightJoint (right_joint), wheelSeparation (0.34 m),
-wheelDiameter (0.15 m), wheelTorque (5 N m), wheelAcceleration (0: no limit, rad/s^2),
+wheelDiameter (0.15 m), wheelTorque (5 N m), wheelAcceleration (m/s^2 at the wheel's rim, as
+gazebo_ros reads it; 0 or false: no limit),
 commandTopic (cmd_vel), odometryTopic (odom), odometryFrame (odom),
 robotBaseFrame (base_footprint), publishWheelTF (false), publishOdomTF (true),
 publishWheelJointState (false), publishTf (true: false turns all TF off),
@@ -38,7 +39,8 @@ class DiffDrive(DriveBase):
         self.right_joint = self.joint("rightJoint", "right_joint")
         self.separation, self.radius = self.wheel_geometry(0.34, 0.15)
         self.torque = self.number("wheelTorque", 5.0)
-        self.acceleration = self.number("wheelAcceleration", 0.0)
+        # m/s^2 at the rim, as gazebo_ros compares it with the joint's speed times the radius
+        self.acceleration = self.number("wheelAcceleration", 0.0, false_value=0.0)
         self.publish_tf = self.flag("publishTf", True)
         self.publish_odom_tf = self.flag("publishOdomTF", True) and self.publish_tf
         self.publish_wheel_tf = self.flag("publishWheelTF", False) and self.publish_tf
@@ -66,7 +68,7 @@ class DiffDrive(DriveBase):
     # --- the step -------------------------------------------------------------------------
     def before_step(self, now_ns: int) -> None:
         targets = wheel_speeds(*self.command, self.separation, self.radius)
-        max_change = self.acceleration * self.context.step_size
+        max_change = self.acceleration / self.radius * self.context.step_size  # rad/s per step
         for side in (0, 1):
             self.wheel_target[side] = limit_change(self.wheel_target[side], targets[side],
                                                    max_change)
