@@ -6,7 +6,10 @@ import subprocess
 import pytest
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-SKIP = (os.sep + ".ws" + os.sep, os.sep + ".venv" + os.sep, os.sep + "test_results" + os.sep)
+# not the workspace's own files: build and test output, and test/fixtures (files written as a
+# student writes them, built in a workspace of their own by the e2e tests)
+SKIP = (os.sep + ".ws" + os.sep, os.sep + ".venv" + os.sep, os.sep + "test_results" + os.sep,
+        os.sep + os.path.join("test", "fixtures") + os.sep)
 
 
 def workspace_files(pattern):

@@ -277,7 +277,12 @@ def parse_model(text: str, source: str = "<sdf>") -> ModelSpec:
         raise SdfError(f"{source}: not well-formed XML: {error}") from None
     element = root if root.tag == "model" else root.find("model")
     if element is None:
-        raise SdfError(f"{source}: no <model> in it")
+        # spawn_model -database NAME sends a world that includes model://NAME
+        include = root.find(".//include")
+        model = _include(include, source) if include is not None else None
+        if model is None:
+            raise SdfError(f"{source}: no <model> in it")
+        return model
     return _model(element, source, os.getcwd())
 
 

@@ -181,10 +181,18 @@ def main(argv: Optional[List[str]] = None) -> int:
         print(f"spawn_model: {error}", file=sys.stderr)
         return 1
     if args.b:
+        # as upstream: the model goes when this node is shut down (a service call still
+        # works in a shutdown hook, not after rospy.spin() has returned)
+        delete = rospy.ServiceProxy(f"{args.gazebo_namespace.rstrip('/')}/delete_model",
+                                    DeleteModel)
+
+        def delete_model():
+            try:
+                delete(args.model)
+            except (rospy.ServiceException, rospy.ROSException) as error:
+                print(f"spawn_model: could not delete '{args.model}': {error}",
+                      file=sys.stderr)
+
+        rospy.on_shutdown(delete_model)
         rospy.spin()
-        try:
-            rospy.ServiceProxy(f"{args.gazebo_namespace.rstrip('/')}/delete_model",
-                               DeleteModel)(args.model)
-        except rospy.ServiceException:
-            pass
     return 0
