@@ -74,6 +74,11 @@ def test_the_students_commands_spawn_scan_rotate_and_teleop(overlay, ros_env, re
                             or not launch.running(), 90, "the robot to be spawned")
         assert launch.running(), launch.output()[-3000:]
 
+        # the world's model:// include found through the package's exported model path
+        world = subprocess.run(["rosservice", "call", "/gazebo/get_world_properties"],
+                               env=env, capture_output=True, text=True, timeout=30, check=True)
+        assert "start_marker" in yaml.safe_load(world.stdout)["model_names"]
+
         # the student's Python node: gazebo_msgs' service and tf.transformations
         probe = subprocess.run(["rosrun", "course_robot_ros", "true_pose.py"], env=env,
                                capture_output=True, text=True, timeout=60, check=True)

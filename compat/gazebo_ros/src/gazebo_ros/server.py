@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import subprocess
 import sys
 from typing import Any, Dict, List, Optional, Tuple
 
@@ -69,13 +70,35 @@ def parse_command_line(argv: List[str]) -> Tuple[Dict[str, Any], int, List[str]]
     return overrides, (rospy.DEBUG if args.verbose else rospy.INFO), notes
 
 
-def add_resource_path() -> None:
-    """Puts this package's share folder on GAZEBO_RESOURCE_PATH, as Gazebo's setup.sh puts
-    /usr/share/gazebo-11, so that ``worlds/empty.world`` resolves."""
+def _extend_path(variable: str, folders: List[str]) -> None:
+    paths = [p for p in os.environ.get(variable, "").split(os.pathsep) if p]
+    paths += [folder for folder in folders if folder not in paths]
+    os.environ[variable] = os.pathsep.join(paths)
+
+
+def exported_paths(attribute: str) -> List[str]:
+    """What packages export to gazebo_ros, as gazebo_ros's paths plugin reads it:
+    ``<export><gazebo_ros gazebo_model_path="${prefix}/models"/></export>``."""
+    try:
+        listed = subprocess.run(["rospack", "plugins", f"--attrib={attribute}", "gazebo_ros"],
+                                capture_output=True, text=True, timeout=60, check=False)
+    except (OSError, subprocess.TimeoutExpired):
+        return []
+    folders = []
+    for line in listed.stdout.splitlines():
+        _package, _, folder = line.partition(" ")
+        folders.extend(f for f in folder.strip().split(os.pathsep) if f)
+    return folders
+
+
+def add_search_paths() -> None:
+    """Gazebo's search paths as gazebo_ros sets them: this package's share folder on
+    GAZEBO_RESOURCE_PATH (as Gazebo's setup.sh puts /usr/share/gazebo-11 there, so that
+    ``worlds/empty.world`` resolves), and what packages export as gazebo_model_path and
+    gazebo_media_path."""
     here = rospkg.RosPack().get_path("gazebo_ros")
-    paths = [p for p in os.environ.get("GAZEBO_RESOURCE_PATH", "").split(os.pathsep) if p]
-    if here not in paths:
-        os.environ["GAZEBO_RESOURCE_PATH"] = os.pathsep.join(paths + [here])
+    _extend_path("GAZEBO_RESOURCE_PATH", [here] + exported_paths("gazebo_media_path"))
+    _extend_path("GAZEBO_MODEL_PATH", exported_paths("gazebo_model_path"))
 
 
 def main(argv: Optional[List[str]] = None, gui: Optional[bool] = None) -> None:
@@ -86,7 +109,7 @@ def main(argv: Optional[List[str]] = None, gui: Optional[bool] = None) -> None:
         rospy.myargv(argv if argv is not None else sys.argv)[1:])
     if gui is not None:
         overrides["gui"] = gui
-    add_resource_path()
+    add_search_paths()
     for note in notes:
         print(f"gzserver: {note}", file=sys.stderr)
     ros_node.main(overrides, log_level)
