@@ -3,8 +3,20 @@
 The node is named ``gazebo`` by the launch files, so its services are gazebo_ros's:
 ``/gazebo/spawn_urdf_model``, ``spawn_sdf_model``, ``delete_model``, ``get_model_state``,
 ``set_model_state``, ``set_model_configuration``, ``get_world_properties``,
+``get_model_properties``, ``get_link_state``, ``set_link_state``,
+``get_physics_properties``, ``set_physics_properties``, ``apply_body_wrench``,
+``clear_body_wrenches``, ``apply_joint_effort``, ``clear_joint_forces``,
 ``pause_physics``, ``unpause_physics``, ``reset_simulation``, ``reset_world``; topics
-``/clock`` and ``/gazebo/model_states``.
+``/clock``, ``/gazebo/model_states`` and ``/gazebo/link_states`` (the two published at
+``~model_states_frequency``, and only while someone listens).
+
+A request that cannot be done answers ``success: false`` with a ``status_message`` naming
+the cause (``<Service>: ...``), and the node goes on; ``clear_body_wrenches`` and
+``clear_joint_forces`` have no answer fields, so an unknown name there is a warning.
+
+Pacing: the world's ``max_update_rate`` × step size is the real time factor the loop keeps
+to (0: as fast as it can); ``~real_time_factor`` sets it at start, set_physics_properties
+later, as Gazebo's real_time_update_rate.
 
 Threads: the physics runs in the main thread, which alone touches pybullet. Service
 calls arrive on rospy's threads and are handed to it through a queue (so a request
@@ -29,16 +41,22 @@ from rosgraph_msgs.msg import Clock
 from std_srvs.srv import Empty, EmptyResponse
 from tf2_msgs.msg import TFMessage
 
-from gazebo_msgs.msg import ModelStates
+from gazebo_msgs.msg import LinkStates, ModelStates
 from sim_bridge.plugins.base import Bus, PluginError
 from sim_bridge.poses import quaternion_matrix
 from sim_bridge.sdf_world import SdfError, load_world, parse_model
-from gazebo_msgs.srv import (DeleteModel, DeleteModelResponse, GetModelState,
-                            GetModelStateResponse, GetWorldProperties,
-                            GetWorldPropertiesResponse, SetModelConfiguration,
-                            SetModelConfigurationResponse, SetModelState, SetModelStateResponse,
-                            SpawnModel, SpawnModelResponse)
-from sim_bridge.world import SimError, World
+from gazebo_msgs.srv import (ApplyBodyWrench, ApplyBodyWrenchResponse, ApplyJointEffort,
+                            ApplyJointEffortResponse, BodyRequest, BodyRequestResponse,
+                            DeleteModel, DeleteModelResponse, GetLinkState,
+                            GetLinkStateResponse, GetModelProperties,
+                            GetModelPropertiesResponse, GetModelState, GetModelStateResponse,
+                            GetPhysicsProperties, GetPhysicsPropertiesResponse,
+                            GetWorldProperties, GetWorldPropertiesResponse, JointRequest,
+                            JointRequestResponse, SetLinkState, SetLinkStateResponse,
+                            SetModelConfiguration, SetModelConfigurationResponse, SetModelState,
+                            SetModelStateResponse, SetPhysicsProperties,
+                            SetPhysicsPropertiesResponse, SpawnModel, SpawnModelResponse)
+from sim_bridge.world import WORLD_FRAMES, SimError, World
 from urdf_tools.model import UrdfError
 
 # How long a service waits for the physics thread to take its request (wall seconds).
@@ -194,6 +212,22 @@ def _fill_twist(twist: Twist, linear, angular) -> None:
     twist.angular.x, twist.angular.y, twist.angular.z = (float(v) for v in angular)
 
 
+def _vector(message) -> tuple:
+    return (message.x, message.y, message.z)
+
+
+def _relative(position, orientation, linear, angular, frame):
+    """A pose and twist in the world seen from ``frame`` = (position, orientation, linear,
+    angular) of the frame: gazebo_ros's get_*_state (the twist is relative to the frame's
+    origin, in its axes)."""
+    frame_position, frame_orientation, frame_linear, frame_angular = frame
+    inverse = pb.invertTransform(frame_position, frame_orientation)
+    position, orientation = pb.multiplyTransforms(*inverse, position, orientation)
+    rotation = quaternion_matrix(frame_orientation).T
+    return (position, orientation, rotation @ (np.asarray(linear) - frame_linear),
+            rotation @ (np.asarray(angular) - frame_angular))
+
+
 class SimBridgeNode:
     """gazebo_ros's interface over a World; ``run()`` is the physics loop."""
 
@@ -208,15 +242,17 @@ class SimBridgeNode:
         self._next_clock_ns = 0
         self._next_states_ns = 0
         self._pace_anchor = None
+        self.model_states = None
+        self.link_states = None
 
     # --- set-up -------------------------------------------------------------------------
     def advertise_clock(self) -> None:
         self.clock = rospy.Publisher("/clock", Clock, queue_size=10)
-        self.model_states = None
 
     def advertise(self) -> None:
         self.advertise_clock()
         self.model_states = rospy.Publisher("~model_states", ModelStates, queue_size=1)
+        self.link_states = rospy.Publisher("~link_states", LinkStates, queue_size=1)
         services = [
             ("spawn_urdf_model", SpawnModel, self._spawn_urdf),
             ("spawn_sdf_model", SpawnModel, self._spawn_sdf),
@@ -225,6 +261,15 @@ class SimBridgeNode:
             ("set_model_state", SetModelState, self._set_state),
             ("set_model_configuration", SetModelConfiguration, self._set_configuration),
             ("get_world_properties", GetWorldProperties, self._world_properties),
+            ("get_model_properties", GetModelProperties, self._model_properties),
+            ("get_link_state", GetLinkState, self._get_link_state),
+            ("set_link_state", SetLinkState, self._set_link_state),
+            ("get_physics_properties", GetPhysicsProperties, self._get_physics),
+            ("set_physics_properties", SetPhysicsProperties, self._set_physics),
+            ("apply_body_wrench", ApplyBodyWrench, self._apply_wrench),
+            ("clear_body_wrenches", BodyRequest, self._clear_wrenches),
+            ("apply_joint_effort", ApplyJointEffort, self._apply_effort),
+            ("clear_joint_forces", JointRequest, self._clear_efforts),
             ("pause_physics", Empty, self._pause),
             ("unpause_physics", Empty, self._unpause),
             ("reset_simulation", Empty, self._reset),
@@ -239,24 +284,25 @@ class SimBridgeNode:
         the cause, and the node goes on."""
         response_class = kind._response_class
 
+        service = kind._type.split('/')[-1]
+
         def serve(request):
             try:
                 return self.physics.call(lambda: handler(request))
             except (SimError, UrdfError, SdfError, PluginError, ValueError) as error:
-                rospy.logerr(f"{kind._type.split('/')[-1]}: {error}")
+                rospy.logerr(f"{service}: {error}")
                 response = response_class()
                 if hasattr(response, "success"):
                     response.success = False
-                    response.status_message = str(error)
+                    response.status_message = f"{service}: {error}"
                     return response
-                raise rospy.ServiceException(str(error))
+                raise rospy.ServiceException(f"{service}: {error}")
         return serve
 
     def _relative_to(self, frame: str):
-        """(position, orientation) of a reference frame: '' / 'world' or a model's name."""
-        if frame in ("", "world", "map", "/world"):
-            return (0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)
-        return self.world.pose(frame.split("::")[0])
+        """(position, orientation) of a reference frame: the world ('', 'world', 'map'), a
+        model or a link (``model::link``)."""
+        return self.world.frame_state(frame)[:2]
 
     def _spawn(self, request, kind: str):
         position, orientation = _pose_parts(request.initial_pose)
@@ -297,12 +343,10 @@ class SimBridgeNode:
     def _get_state(self, request):
         position, orientation = self.world.pose(request.model_name)
         linear, angular = self.world.twist(request.model_name)
-        if request.relative_entity_name not in ("", "world", "/world", "map"):
-            base_position, base_orientation = self._relative_to(request.relative_entity_name)
-            inverse = pb.invertTransform(base_position, base_orientation)
-            position, orientation = pb.multiplyTransforms(*inverse, position, orientation)
-            rotation = quaternion_matrix(base_orientation).T
-            linear, angular = rotation @ linear, rotation @ angular
+        if request.relative_entity_name not in WORLD_FRAMES:
+            position, orientation, linear, angular = _relative(
+                position, orientation, linear, angular,
+                self.world.frame_state(request.relative_entity_name))
         response = GetModelStateResponse()
         response.header.stamp = rospy.Time(nsecs=self.world.now_ns)
         response.header.frame_id = request.relative_entity_name or "world"
@@ -336,6 +380,101 @@ class SimBridgeNode:
         return GetWorldPropertiesResponse(self.world.now, sorted(self.world.models),
                                           self.world.gui, True, "GetWorldProperties: got properties")
 
+    def _model_properties(self, request):
+        properties = self.world.model_properties(request.model_name)
+        return GetModelPropertiesResponse(
+            parent_model_name=properties.parent_model_name,
+            canonical_body_name=properties.canonical_body_name,
+            body_names=list(properties.body_names), geom_names=list(properties.geom_names),
+            joint_names=list(properties.joint_names),
+            child_model_names=list(properties.child_model_names),
+            is_static=properties.is_static, success=True,
+            status_message="GetModelProperties: got properties")
+
+    def _get_link_state(self, request):
+        ref = self.world.find_link(request.link_name)
+        position, orientation = self.world.link_pose(ref)
+        linear, angular = self.world.link_twist(ref)
+        if request.reference_frame not in WORLD_FRAMES:
+            position, orientation, linear, angular = _relative(
+                position, orientation, linear, angular,
+                self.world.frame_state(request.reference_frame))
+        response = GetLinkStateResponse(success=True, status_message="GetLinkState: got state")
+        response.link_state.link_name = request.link_name
+        response.link_state.reference_frame = request.reference_frame
+        _fill_pose(response.link_state.pose, position, orientation)
+        _fill_twist(response.link_state.twist, linear, angular)
+        return response
+
+    def _set_link_state(self, request):
+        state = request.link_state
+        ref = self.world.find_link(state.link_name)
+        position, orientation = _pose_parts(state.pose)
+        linear, angular = np.asarray(_vector(state.twist.linear)), \
+            np.asarray(_vector(state.twist.angular))
+        if state.reference_frame not in WORLD_FRAMES:
+            # the pose and the twist are given in the frame's axes
+            frame_position, frame_orientation = self._relative_to(state.reference_frame)
+            position, orientation = pb.multiplyTransforms(frame_position, frame_orientation,
+                                                          position, orientation)
+            rotation = quaternion_matrix(frame_orientation)
+            linear, angular = rotation @ linear, rotation @ angular
+        self.world.set_link_state(ref, position, orientation, linear, angular)
+        return SetLinkStateResponse(True, "SetLinkState: success")
+
+    def _get_physics(self, _request):
+        properties = self.world.physics_properties()
+        response = GetPhysicsPropertiesResponse(
+            time_step=properties.time_step, pause=properties.paused,
+            max_update_rate=properties.max_update_rate, success=True,
+            status_message="GetPhysicsProperties: got properties")
+        response.gravity.x, response.gravity.y, response.gravity.z = properties.gravity
+        for name, value in properties.ode.items():
+            setattr(response.ode_config, name, value)
+        return response
+
+    def _set_physics(self, request):
+        self.world.set_physics(request.time_step, request.max_update_rate,
+                               _vector(request.gravity))
+        self._pace_anchor = None
+        # pybullet's solver is not ODE: its settings are reported, not taken
+        reported = self.world.physics_properties().ode
+        asked = {name: getattr(request.ode_config, name) for name in reported}
+        if any(asked.values()) and asked != reported:
+            rospy.logwarn("SetPhysicsProperties: ode_config is not applied (the solver is "
+                          "pybullet's, not ODE); time_step, max_update_rate and gravity are")
+        return SetPhysicsPropertiesResponse(True, "physics engine updated")
+
+    def _apply_wrench(self, request):
+        wrench = request.wrench
+        ref = self.world.apply_wrench(
+            request.body_name, _vector(wrench.force), _vector(wrench.torque),
+            request.reference_frame, _vector(request.reference_point),
+            request.start_time.to_nsec(), request.duration.to_nsec())
+        return ApplyBodyWrenchResponse(True, f"ApplyBodyWrench: wrench on '{ref.scoped}' "
+                                             "scheduled")
+
+    def _clear_wrenches(self, request):
+        try:
+            self.world.clear_wrenches(request.body_name)
+        except SimError as error:  # no answer fields: gazebo_ros answers, and so do we
+            rospy.logwarn(f"ClearBodyWrenches: {error}")
+        return BodyRequestResponse()
+
+    def _apply_effort(self, request):
+        model, joint = self.world.apply_joint_effort(
+            request.joint_name, request.effort, request.start_time.to_nsec(),
+            request.duration.to_nsec())
+        return ApplyJointEffortResponse(True, f"ApplyJointEffort: effort set on "
+                                              f"'{model}::{joint}'")
+
+    def _clear_efforts(self, request):
+        try:
+            self.world.clear_joint_efforts(request.joint_name)
+        except SimError as error:
+            rospy.logwarn(f"ClearJointForces: {error}")
+        return JointRequestResponse()
+
     def _pause(self, _request):
         self.world.paused = True
         return EmptyResponse()
@@ -367,9 +506,20 @@ class SimBridgeNode:
             message.twist.append(twist)
         self.model_states.publish(message)
 
+    def _publish_link_states(self) -> None:
+        message = LinkStates()
+        for name, position, orientation, linear, angular in self.world.link_states():
+            pose, twist = Pose(), Twist()
+            _fill_pose(pose, position, orientation)
+            _fill_twist(twist, linear, angular)
+            message.name.append(name)
+            message.pose.append(pose)
+            message.twist.append(twist)
+        self.link_states.publish(message)
+
     def _pace(self) -> None:
         """Sleeps so that simulated time runs at real_time_factor times the wall clock."""
-        factor = self.config.real_time_factor
+        factor = self.world.real_time_factor
         if factor <= 0:
             return
         wall = time.monotonic()
@@ -403,6 +553,8 @@ class SimBridgeNode:
                 # as gazebo_ros: only when someone listens (41 poses cost ~0.4 ms)
                 if self.model_states and self.model_states.get_num_connections() > 0:
                     self._publish_model_states()
+                if self.link_states and self.link_states.get_num_connections() > 0:
+                    self._publish_link_states()
                 self._next_states_ns = now_ns + self.states_period_ns
             self._pace()
 
@@ -417,6 +569,7 @@ def build_world(config: Config, bus: Bus) -> World:
         world.load_world(load_world(config.world_name))
         rospy.loginfo(f"loaded world {config.world_name}: {len(world.models)} models, "
                       f"step {world.step_size * 1000:g} ms")
+    world.real_time_factor = config.real_time_factor
     world.paused = config.paused
     return world
 

@@ -3,7 +3,15 @@
 It holds the models (static scenery, free bodies from SDF, robots from URDF with their
 plugins), steps the physics with a fixed step, keeps simulated time as an integer number
 of nanoseconds (monotonic, also across resets), and answers Gazebo's questions: spawn,
-delete, get and set a model's state, pause, reset.
+delete, get and set a model's or a link's state, a model's properties, the physics
+properties (step size, update rate, gravity), wrenches and joint efforts for a while of
+simulated time (:mod:`sim_bridge.external_forces`), pause, reset.
+
+Names are Gazebo's: a link is ``model::link`` or its plain name (the first model having
+it, as Gazebo's ``EntityByName``), and a model's links and joints are those Gazebo shows,
+after sdformat's lumping of fixed joints (:mod:`sim_bridge.model_structure`). Poses are of
+link frames (URDF's, SDF's), never of pybullet's centres of mass; a model's pose is its
+frame's (a robot's root link, an SDF model's ``<pose>``).
 
 Static scenery is one fixed rigid body per shape (``useMaximalCoordinates``): a fixed
 multi-link body would have all its links re-posed every step (four times the step cost
@@ -13,12 +21,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Dict, List, Mapping, Optional, Sequence, Tuple
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import pybullet as pb
 
+from sim_bridge.external_forces import (BodyWrench, ExternalForces, JointEffort, LinkMasses,
+                                        Window, centre_of_mass)
 from sim_bridge.gazebo_tags import GazeboTags, read_gazebo_tags
+from sim_bridge.model_structure import Structure, sdf_structure, urdf_structure
 from sim_bridge.plugins import create_plugins
 from sim_bridge.plugins.base import Bus, Plugin, PluginContext
 from sim_bridge.poses import (compose6, normalized, pose6_matrix, pose6_to_position_quaternion,
@@ -35,6 +46,15 @@ WORLD_FRICTION = 1.0
 
 Vec3 = Tuple[float, float, float]
 Quat = Tuple[float, float, float, float]
+Transform = Tuple[Vec3, Quat]
+IDENTITY: Transform = ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))
+# reference frames that mean the world (gazebo_ros: "", world, map, /map)
+WORLD_FRAMES = frozenset(("", "world", "/world", "map", "/map"))
+# ODE's settings as Gazebo's worlds have them, reported by get_physics_properties (the
+# solver is pybullet's, not ODE: see World.physics_properties)
+ODE_DEFAULTS = dict(auto_disable_bodies=False, sor_pgs_precon_iters=0, sor_pgs_iters=50,
+                    sor_pgs_w=1.3, sor_pgs_rms_error_tol=0.0, contact_surface_layer=0.001,
+                    contact_max_correcting_vel=100.0, cfm=0.0, erp=0.2, max_contacts=20)
 
 
 @dataclass(frozen=True)
@@ -79,11 +99,69 @@ class Model:
     # moving models: their shapes for lasers, placed each scan from the bodies' poses
     ray_shapes: List[RayShape] = field(default_factory=list)
     has_mesh: bool = False
+    # the links, joints and collisions Gazebo shows (see sim_bridge.model_structure)
+    structure: Structure = field(default_factory=lambda: Structure(()))
+    # free SDF bodies: the link's frame and pybullet's base (its centre of mass) in the
+    # model's frame
+    link_in_model: Transform = IDENTITY
+    com_in_model: Transform = IDENTITY
+
+
+@dataclass(frozen=True)
+class LinkRef:
+    """One of Gazebo's links: a model's name and the link's (plain) name."""
+
+    model: str
+    link: str
+
+    @property
+    def scoped(self) -> str:
+        return f"{self.model}::{self.link}"
+
+
+@dataclass(frozen=True)
+class ModelProperties:
+    """gazebo_msgs/GetModelProperties' answer."""
+
+    parent_model_name: str
+    canonical_body_name: str
+    body_names: Tuple[str, ...]
+    geom_names: Tuple[str, ...]
+    joint_names: Tuple[str, ...]
+    child_model_names: Tuple[str, ...]
+    is_static: bool
+
+
+@dataclass(frozen=True)
+class PhysicsProperties:
+    """gazebo_msgs/GetPhysicsProperties' answer; ``ode`` holds ODEPhysics' fields."""
+
+    time_step: float
+    paused: bool
+    max_update_rate: float
+    gravity: Vec3
+    ode: Dict[str, Any]
 
 
 def _finite(values: Sequence[float], what: str) -> None:
     if not all(math.isfinite(v) for v in values):
         raise SimError(f"{what} {tuple(values)} is not finite")
+
+
+def _compose(outer: Transform, inner: Transform) -> Transform:
+    return pb.multiplyTransforms(outer[0], outer[1], inner[0], inner[1])
+
+
+def _inverse(transform: Transform) -> Transform:
+    return pb.invertTransform(transform[0], transform[1])
+
+
+def _moved(linear: Sequence[float], angular: Sequence[float], origin: Sequence[float],
+           point: Sequence[float]) -> np.ndarray:
+    """The velocity of ``point`` on a rigid body whose ``origin`` moves at ``linear`` while
+    it turns at ``angular``."""
+    return np.asarray(linear, dtype=float) + np.cross(
+        np.asarray(angular, dtype=float), np.asarray(point, dtype=float) - np.asarray(origin))
 
 
 def pose_matrix(position: Sequence[float], orientation: Sequence[float]) -> np.ndarray:
@@ -115,6 +193,10 @@ class World:
         self.paused = False
         self.step_size = step_size
         self.gravity = tuple(gravity)
+        # Gazebo's real_time_update_rate: steps per wall second the simulator aims at
+        # (0: as many as it can); the world does not pace itself, its owner does
+        self.max_update_rate = 1.0 / step_size
+        self.forces = ExternalForces(self.client)
         self._configure_physics()
 
     # --- physics settings --------------------------------------------------------------
@@ -135,9 +217,58 @@ class World:
     def now(self) -> float:
         return self.now_ns / 1e9
 
+    @property
+    def real_time_factor(self) -> float:
+        """Simulated seconds per wall second aimed at: max_update_rate × step size (0: as
+        fast as possible), as Gazebo derives it."""
+        return self.max_update_rate * self.step_size
+
+    @real_time_factor.setter
+    def real_time_factor(self, factor: float) -> None:
+        if not math.isfinite(factor) or factor < 0:
+            raise SimError(f"the real time factor must be 0 (as fast as possible) or "
+                           f"positive, not {factor}")
+        self.max_update_rate = factor / self.step_size
+
+    def physics_properties(self) -> PhysicsProperties:
+        """Gazebo's physics properties. pybullet's solver is not ODE: ``ode`` reports
+        pybullet's solver iterations as ``sor_pgs_iters`` and, for the rest, the values of
+        Gazebo's ODE that pybullet's defaults correspond to (erp 0.2, cfm 0)."""
+        ode = dict(ODE_DEFAULTS)
+        ode["sor_pgs_iters"] = int(pb.getPhysicsEngineParameters(
+            physicsClientId=self.client)["numSolverIterations"])
+        return PhysicsProperties(self.step_size, self.paused, self.max_update_rate,
+                                 tuple(self.gravity), ode)
+
+    def set_physics(self, time_step: float, max_update_rate: float,
+                    gravity: Sequence[float]) -> None:
+        """gazebo_ros's set_physics_properties: the step size (s), the update rate (steps
+        per wall second, 0: as fast as possible) and gravity (m/s²). Plugins see the new
+        step size and gravity from the next step on; rates they fixed when spawned stay."""
+        if not math.isfinite(time_step) or time_step <= 0:
+            raise SimError(f"time_step {time_step} must be a positive number of seconds "
+                           f"(it is {self.step_size:g} now; get_physics_properties gives "
+                           "every current value)")
+        if not math.isfinite(max_update_rate) or max_update_rate < 0:
+            raise SimError(f"max_update_rate {max_update_rate} must be 0 (as fast as "
+                           "possible) or a positive number of steps per second")
+        _finite(gravity, "gravity")
+        self.step_size = float(time_step)
+        self.max_update_rate = float(max_update_rate)
+        self.gravity = tuple(float(g) for g in gravity)
+        self._configure_physics()
+        for model in self.models.values():
+            for plugin in model.plugins:
+                context = getattr(plugin, "context", None)
+                if context is not None:
+                    context.step_size = self.step_size
+                    context.gravity = self.gravity
+
     def load_world(self, spec: WorldSpec) -> None:
+        factor = self.real_time_factor
         self.step_size = spec.step_size
         self.gravity = spec.gravity
+        self.max_update_rate = factor / self.step_size
         self._configure_physics()
         for model in spec.models:
             self.add_sdf_model(model)
@@ -155,10 +286,16 @@ class World:
         model = Model(spec.name, "static" if spec.static else "body", pos, orn, namespace, spec,
                       position=pos, orientation=orn)
         model.has_mesh = any(s.kind == "mesh" for link in spec.links for s in link.collisions)
+        model.structure = sdf_structure(spec)
         if spec.static:
             self._create_static_bodies(model)
         else:
             model.body = self._free_body(spec)
+            # pybullet's base is the link's centre of mass
+            link_pose = pose6_to_position_quaternion(spec.links[0].pose)
+            inertial = pb.getDynamicsInfo(model.body, -1, physicsClientId=self.client)
+            model.link_in_model = link_pose
+            model.com_in_model = _compose(link_pose, (inertial[3], inertial[4]))
             model.ray_shapes = [
                 RayShape(None, pose6_matrix(link.pose) @ pose6_matrix(shape.pose), shape.kind,
                          shape.size, shape.radius, shape.length)
@@ -328,7 +465,8 @@ class World:
         robot = RobotBody(self.client, description, tags, xml, position, orientation,
                           self.bus.warn)
         model = Model(name, "robot", tuple(position), tuple(orientation), namespace.strip("/"),
-                      robot=robot, tags=tags, body=robot.id, initial_joints=joints)
+                      robot=robot, tags=tags, body=robot.id, initial_joints=joints,
+                      structure=urdf_structure(description))
         robot.reset_joints(joints)
         context = PluginContext(self.client, robot, name, model.namespace, self.bus,
                                 np.random.default_rng([self.seed, len(self.models)]),
@@ -362,6 +500,7 @@ class World:
         for plugin in model.plugins:
             plugin.close()
         del self.models[name]
+        self.forces.forget_model(name)
         self._scene_changed()
         if model.kind == "static":
             self._remove_static_bodies(model)
@@ -376,7 +515,8 @@ class World:
             return model.position, model.orientation
         if model.robot is not None:
             return model.robot.base_pose()
-        return pb.getBasePositionAndOrientation(model.body, physicsClientId=self.client)
+        com = pb.getBasePositionAndOrientation(model.body, physicsClientId=self.client)
+        return _compose(com, _inverse(model.com_in_model))
 
     def twist(self, name: str) -> Tuple[np.ndarray, np.ndarray]:
         model = self.model(name)
@@ -384,8 +524,10 @@ class World:
             return np.zeros(3), np.zeros(3)
         if model.robot is not None:
             return model.robot.base_twist()
+        # the velocity of the model frame's origin (pybullet gives its centre of mass's)
         linear, angular = pb.getBaseVelocity(model.body, physicsClientId=self.client)
-        return np.asarray(linear), np.asarray(angular)
+        com, _ = pb.getBasePositionAndOrientation(model.body, physicsClientId=self.client)
+        return _moved(linear, angular, com, self.pose(name)[0]), np.asarray(angular)
 
     def set_state(self, name: str, position: Sequence[float], orientation: Sequence[float],
                   linear: Sequence[float] = (0, 0, 0), angular: Sequence[float] = (0, 0, 0)) -> None:
@@ -407,10 +549,14 @@ class World:
         elif model.robot is not None:
             model.robot.set_base_state(position, orientation, linear, angular)
         else:
-            pb.resetBasePositionAndOrientation(model.body, list(position), list(orientation),
+            com_position, com_orientation = _compose((position, orientation),
+                                                     model.com_in_model)
+            pb.resetBasePositionAndOrientation(model.body, list(com_position),
+                                               list(com_orientation),
                                                physicsClientId=self.client)
-            pb.resetBaseVelocity(model.body, list(linear), list(angular),
-                                 physicsClientId=self.client)
+            pb.resetBaseVelocity(model.body, _moved(linear, angular, position,
+                                                    com_position).tolist(),
+                                 list(angular), physicsClientId=self.client)
 
     def set_joint_positions(self, name: str, positions: Mapping[str, float]) -> None:
         """Puts a robot's joints at positions (they become its reset positions too); its
@@ -428,6 +574,241 @@ class World:
         model.initial_joints.update(positions)
         for plugin in model.plugins:
             plugin.reset(self.now_ns)
+
+    # --- Gazebo's entities: models, links, joints ---------------------------------------
+    def find_entity(self, name: str) -> Union[Model, LinkRef, None]:
+        """What Gazebo's ``EntityByName`` finds: the models in order, each before its
+        links; a link by ``model::link`` or by its plain name (the first model's)."""
+        for model in self.models.values():
+            if name == model.name:
+                return model
+            for body in model.structure.bodies:
+                if name == body or name == f"{model.name}::{body}":
+                    return LinkRef(model.name, body)
+        return None
+
+    def find_link(self, name: str) -> LinkRef:
+        found = self.find_entity(name)
+        if isinstance(found, LinkRef):
+            return found
+        raise SimError(self._not_a_link(name, found))
+
+    @staticmethod
+    def _scoped(model: Model, names: Sequence[str]) -> str:
+        return ", ".join(f"{model.name}::{name}" for name in names) or "none"
+
+    def _not_a_link(self, name: str, found: Optional[Model]) -> str:
+        if found is not None:
+            return (f"'{name}' is a model, not a link; its links: "
+                    f"{self._scoped(found, found.structure.bodies)}")
+        model_name, _, link = name.rpartition("::")
+        if model_name and model_name not in self.models:
+            return (f"there is no link named '{name}': there is no model named "
+                    f"'{model_name}' (models: {', '.join(self.models) or 'none'})")
+        for model in [self.models[model_name]] if model_name else self.models.values():
+            joint = model.structure.lumped_by.get(link)
+            if joint is not None:
+                body = model.structure.body_of[link]
+                return (f"model '{model.name}' has no link '{link}': Gazebo lumps it into "
+                        f"'{body}' (fixed joint '{joint}'); ask for '{model.name}::{body}', "
+                        f"or keep the link with <gazebo reference=\"{joint}\">"
+                        "<preserveFixedJoint>true</preserveFixedJoint></gazebo>")
+        if model_name:
+            model = self.models[model_name]
+            return (f"model '{model_name}' has no link '{link}' (its links: "
+                    f"{self._scoped(model, model.structure.bodies)})")
+        return (f"there is no link named '{name}' (name a link as model::link; models: "
+                f"{', '.join(self.models) or 'none'})")
+
+    def frame_state(self, name: str) -> Tuple[Vec3, Quat, np.ndarray, np.ndarray]:
+        """Pose and twist (world axes; the velocity of the frame's origin) of a reference
+        frame: the world ('', 'world', 'map'), a model or a link."""
+        if name in WORLD_FRAMES:
+            return (0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0), np.zeros(3), np.zeros(3)
+        found = self.find_entity(name)
+        if isinstance(found, Model):
+            return (*self.pose(found.name), *self.twist(found.name))
+        if isinstance(found, LinkRef):
+            return (*self.link_pose(found), *self.link_twist(found))
+        raise SimError(f"reference frame '{name}' is not the world ('' or 'world'), a model "
+                       f"or a link: {self._not_a_link(name, None)}")
+
+    def link_pose(self, ref: LinkRef) -> Transform:
+        """World pose of a link's frame."""
+        model = self.model(ref.model)
+        if model.robot is not None:
+            return model.robot.link_pose(ref.link)
+        if model.kind == "static":
+            link = next(l for l in model.spec.links if l.name == ref.link)
+            return _compose((model.position, model.orientation),
+                            pose6_to_position_quaternion(link.pose))
+        return _compose(self.pose(model.name), model.link_in_model)
+
+    def link_twist(self, ref: LinkRef) -> Tuple[np.ndarray, np.ndarray]:
+        """Velocity of a link frame's origin and the link's angular velocity, world axes
+        (pybullet gives its centre of mass's)."""
+        model = self.model(ref.model)
+        if model.kind == "static":
+            return np.zeros(3), np.zeros(3)
+        if model.robot is not None:
+            index = model.robot.link_index[ref.link]
+            if index == -1:
+                return model.robot.base_twist()
+            state = pb.getLinkState(model.robot.id, index, computeLinkVelocity=1,
+                                    computeForwardKinematics=1, physicsClientId=self.client)
+            return _moved(state[6], state[7], state[0], state[4]), np.asarray(state[7])
+        linear, angular = pb.getBaseVelocity(model.body, physicsClientId=self.client)
+        com, _ = pb.getBasePositionAndOrientation(model.body, physicsClientId=self.client)
+        return _moved(linear, angular, com, self.link_pose(ref)[0]), np.asarray(angular)
+
+    def link_states(self) -> List[Tuple[str, Vec3, Quat, np.ndarray, np.ndarray]]:
+        """(``model::link``, position, orientation, linear, angular) of every link of every
+        model, in the world: gazebo_msgs/LinkStates."""
+        states = []
+        for model in self.models.values():
+            for body in model.structure.bodies:
+                ref = LinkRef(model.name, body)
+                position, orientation = self.link_pose(ref)
+                linear, angular = self.link_twist(ref)
+                states.append((ref.scoped, position, orientation, linear, angular))
+        return states
+
+    def set_link_state(self, ref: LinkRef, position: Sequence[float],
+                       orientation: Sequence[float], linear: Sequence[float] = (0, 0, 0),
+                       angular: Sequence[float] = (0, 0, 0)) -> None:
+        """Puts a model's canonical link at a pose with a twist (of its frame's origin,
+        world axes); the model moves with it, as in Gazebo. Other links are refused:
+        pybullet keeps a robot's links on their joints (reduced coordinates), so one link
+        cannot be placed apart from the rest."""
+        model = self.model(ref.model)
+        canonical = model.structure.canonical
+        if ref.link != canonical:
+            if model.robot is not None:
+                joint = model.robot.model.parent_joint(ref.link)
+                raise SimError(
+                    f"link '{ref.scoped}' hangs on joint '{joint.name}': pybullet keeps a "
+                    "robot's links on their joints, so set_link_state places only the "
+                    f"canonical link '{model.name}::{canonical}', which carries the whole "
+                    "model; turn joints with set_model_configuration")
+            raise SimError(f"link '{ref.scoped}' is not the canonical link of model "
+                           f"'{model.name}', '{model.name}::{canonical}', the only one "
+                           "set_link_state places (the model moves with it)")
+        _finite(position, "the position")
+        _finite(linear, "the linear velocity")
+        _finite(angular, "the angular velocity")
+        try:
+            orientation = normalized(orientation)
+        except ValueError as error:
+            raise SimError(f"the orientation: {error}") from None
+        link_in_model = _compose(_inverse(self.pose(model.name)), self.link_pose(ref))
+        model_position, model_orientation = _compose((tuple(position), orientation),
+                                                     _inverse(link_in_model))
+        self.set_state(model.name, model_position, model_orientation,
+                       _moved(linear, angular, position, model_position), angular)
+
+    def model_properties(self, name: str) -> ModelProperties:
+        """What gazebo_ros's get_model_properties says of a model (nested SDF models are
+        merged into their parent here: no child models)."""
+        model = self.model(name)
+        structure = model.structure
+        return ModelProperties("", structure.canonical, structure.bodies, structure.geoms,
+                               structure.joints, (), model.kind == "static")
+
+    def find_joint(self, name: str) -> Tuple[Model, str]:
+        """A joint by ``model::joint`` or its plain name (the first model's), among the
+        joints Gazebo shows."""
+        for model in self.models.values():
+            for joint in model.structure.joints:
+                if name == joint or name == f"{model.name}::{joint}":
+                    return model, joint
+        model_name, _, joint = name.rpartition("::")
+        for model in self.models.values():
+            if model.robot is None or (model_name and model.name != model_name):
+                continue
+            described = model.robot.model.joints.get(joint)
+            if described is not None:  # in the URDF, not in Gazebo: lumped
+                body = model.structure.body_of.get(described.child, described.child)
+                raise SimError(
+                    f"joint '{name}' of model '{model.name}' is a fixed joint Gazebo lumps "
+                    f"away (link '{described.child}' becomes part of '{body}'); keep it with "
+                    f"<gazebo reference=\"{joint}\"><preserveFixedJoint>true"
+                    "</preserveFixedJoint></gazebo>")
+        joints = ", ".join(f"{m.name}::{j}" for m in self.models.values()
+                           for j in m.structure.joints) or "none"
+        raise SimError(f"there is no joint named '{name}' (joints: {joints})")
+
+    # --- forces from outside (see sim_bridge.external_forces) ----------------------------
+    def _link_masses(self, model: Model, body: str) -> LinkMasses:
+        """The pybullet links making up one of Gazebo's links, the link itself first."""
+        if model.robot is None:
+            return [(-1, pb.getDynamicsInfo(model.body, -1, physicsClientId=self.client)[0])]
+        return [(model.robot.link_index[link],
+                 pb.getDynamicsInfo(model.robot.id, model.robot.link_index[link],
+                                    physicsClientId=self.client)[0])
+                for link in model.structure.links_of(body)]
+
+    def apply_wrench(self, body_name: str, force: Sequence[float], torque: Sequence[float],
+                     reference_frame: str = "", reference_point: Sequence[float] = (0, 0, 0),
+                     start_ns: int = 0, duration_ns: int = -1) -> LinkRef:
+        """gazebo_ros's apply_body_wrench. ``force`` and ``torque`` are in the axes of
+        ``reference_frame`` (the world for '', 'world', 'map'; else a model's or a link's
+        frame). The force acts at ``reference_point``: a point in the reference frame, or,
+        in the world frame, an offset from the body's centre of mass (gazebo_ros reads it
+        so: 0 pushes through the centre of mass). The wrench is turned into world axes now
+        and stays so, as Gazebo's; it acts from ``start_ns`` (now, if past) for
+        ``duration_ns`` of simulated time, or until cleared when that is negative."""
+        ref = self.find_link(body_name)
+        model = self.model(ref.model)
+        _finite(force, "the force")
+        _finite(torque, "the torque")
+        _finite(reference_point, "the reference point")
+        if model.kind == "static":
+            raise SimError(f"link '{ref.scoped}' belongs to static model '{model.name}': "
+                           "forces move nothing")
+        links = self._link_masses(model, ref.link)
+        com = centre_of_mass(self.client, model.body, links)
+        world_force = np.asarray(force, dtype=float)
+        world_torque = np.asarray(torque, dtype=float)
+        point = np.asarray(reference_point, dtype=float)
+        if reference_frame in WORLD_FRAMES:
+            lever = point
+        else:
+            frame_position, frame_orientation, _, _ = self.frame_state(reference_frame)
+            rotation = quaternion_matrix(frame_orientation)
+            world_force, world_torque = rotation @ world_force, rotation @ world_torque
+            lever = np.asarray(frame_position) + rotation @ point - com
+        self.forces.wrenches.append(BodyWrench(
+            model.name, ref.link, model.body, links, world_force,
+            world_torque + np.cross(lever, world_force),
+            Window.starting(self.now_ns, start_ns, duration_ns)))
+        return ref
+
+    def clear_wrenches(self, body_name: str) -> int:
+        """Ends the wrenches on a link; how many there were."""
+        ref = self.find_link(body_name)
+        return self.forces.clear_wrenches(lambda w: (w.model, w.body) == (ref.model, ref.link))
+
+    def apply_joint_effort(self, joint_name: str, effort: float, start_ns: int = 0,
+                           duration_ns: int = -1) -> Tuple[str, str]:
+        """gazebo_ros's apply_joint_effort: a torque (N m; a force in N for a prismatic
+        joint) added to whatever drives the joint, from ``start_ns`` (now, if past) for
+        ``duration_ns``, or until cleared when that is negative. (model, joint)."""
+        model, joint = self.find_joint(joint_name)
+        if not math.isfinite(effort):
+            raise SimError(f"the effort {effort} is not finite")
+        described = model.robot.model.joints[joint]
+        if not described.movable:
+            raise SimError(f"joint '{model.name}::{joint}' is {described.type}: an effort "
+                           "moves nothing")
+        self.forces.efforts.append(JointEffort(
+            model.name, joint, model.robot.id, model.robot.joint_index[joint], float(effort),
+            Window.starting(self.now_ns, start_ns, duration_ns)))
+        return model.name, joint
+
+    def clear_joint_efforts(self, joint_name: str) -> int:
+        """Ends the efforts on a joint; how many there were."""
+        model, joint = self.find_joint(joint_name)
+        return self.forces.clear_efforts(lambda e: (e.model, e.joint) == (model.name, joint))
 
     def reset(self) -> None:
         """Every model back where it was spawned, at rest; time goes on (never backwards)."""
@@ -454,6 +835,8 @@ class World:
             plugin.before_step(self.now_ns)
         for robot in self._weightless:
             robot.apply_weightlessness(self.gravity)
+        if self.forces:
+            self.forces.apply(self.now_ns)
         pb.stepSimulation(physicsClientId=self.client)
         self.now_ns += self._step_ns
         for plugin in self._plugins:
@@ -490,9 +873,8 @@ class World:
                 frames = {name: pose_matrix(*model.robot.link_pose(name))
                           for name in {shape.link for shape in model.ray_shapes}}
                 primitives.extend(shape.placed(frames[shape.link]) for shape in model.ray_shapes)
-            elif model.body is not None:
-                frame = pose_matrix(*pb.getBasePositionAndOrientation(
-                    model.body, physicsClientId=self.client))
+            elif model.body is not None:  # ray shapes are placed in the model's frame
+                frame = pose_matrix(*self.pose(model.name))
                 primitives.extend(shape.placed(frame) for shape in model.ray_shapes)
         return primitives
 
@@ -503,4 +885,5 @@ class World:
         pb.disconnect(physicsClientId=self.client)
 
 
-__all__ = ["World", "Model", "SimError", "UrdfError"]
+__all__ = ["World", "Model", "LinkRef", "ModelProperties", "PhysicsProperties", "SimError",
+           "UrdfError", "WORLD_FRAMES"]

@@ -1,0 +1,304 @@
+"""Links by Gazebo's names, their states, model properties, physics properties, wrenches
+and joint efforts, on pybullet.DIRECT: every number from mechanics (Δv = F·d/m,
+Δω = τ·d/I), not from pybullet."""
+import math
+
+import numpy as np
+import pytest
+
+from sim_bridge.poses import quaternion_from_rpy, yaw_from_quaternion
+from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec
+from sim_bridge.world import LinkRef, SimError
+
+from test_model_structure import ROTOR
+from world_fixtures import DATA, run
+
+SECOND = 1_000_000_000
+# the free box: 2 kg, 0.2 m cube, inertia m a²/6 about each axis
+BOX_MASS = 2.0
+BOX_INERTIA = BOX_MASS * 0.2 ** 2 / 6
+
+
+def free_box(world, name="box", pose=(0, 0, 1, 0, 0, 0), link_pose=(0, 0, 0, 0, 0, 0),
+             inertial_pose=(0, 0, 0, 0, 0, 0)):
+    return world.add_sdf_model(ModelSpec(name, False, pose=pose, links=[LinkSpec(
+        "link", pose=link_pose, collisions=[ShapeSpec("box", size=(0.2, 0.2, 0.2))],
+        mass=BOX_MASS, inertia=(BOX_INERTIA,) * 3, inertial_pose=inertial_pose)]))
+
+
+@pytest.fixture
+def weightless(world):
+    world.set_physics(world.step_size, world.max_update_rate, (0.0, 0.0, 0.0))
+    return world
+
+
+@pytest.fixture
+def bot(world, diff_bot_xml):
+    return world.spawn_urdf("bot", diff_bot_xml(), (0, 0, 0))
+
+
+# --- names ------------------------------------------------------------------------------
+def test_links_are_found_scoped_or_plain_as_gazebo_finds_them(world, bot):
+    assert world.find_link("bot::left_wheel") == LinkRef("bot", "left_wheel")
+    assert world.find_link("left_wheel") == LinkRef("bot", "left_wheel")
+    assert world.find_link("ground::link").scoped == "ground::link"
+    assert world.find_link("link") == LinkRef("ground", "link")  # the first model's
+
+
+@pytest.mark.parametrize("name, words", [
+    ("bot::base_link", ["lumps it into 'base_footprint'", "fixed joint 'base_joint'",
+                        "preserveFixedJoint"]),
+    ("laser", ["model 'bot' has no link 'laser'", "'bot::base_footprint'"]),
+    ("bot", ["'bot' is a model, not a link", "bot::left_wheel"]),
+    ("bot::tail", ["model 'bot' has no link 'tail'", "bot::base_footprint, bot::left_wheel"]),
+    ("ghost::link", ["no model named 'ghost'", "models: ground, bot"]),
+    ("nothing", ["no link named 'nothing'", "model::link"]),
+])
+def test_a_name_that_is_no_link_is_refused_naming_it(world, bot, name, words):
+    with pytest.raises(SimError) as error:
+        world.find_link(name)
+    for word in words:
+        assert word in str(error.value)
+
+
+def test_model_properties_are_gazebos(world, bot):
+    properties = world.model_properties("bot")
+    assert properties.body_names == ("base_footprint", "left_wheel", "right_wheel")
+    assert properties.canonical_body_name == "base_footprint"
+    assert properties.joint_names == ("left_wheel_joint", "right_wheel_joint")
+    assert "left_wheel_collision" in properties.geom_names
+    assert not properties.is_static and properties.parent_model_name == ""
+    assert properties.child_model_names == ()
+    ground = world.model_properties("ground")
+    assert ground.is_static and ground.body_names == ("link",)
+    with pytest.raises(SimError, match="no model named 'ghost'"):
+        world.model_properties("ghost")
+
+
+# --- link states ------------------------------------------------------------------------
+def test_link_poses_are_link_frames_and_twists_their_origins_velocity(weightless, bot):
+    world = weightless
+    world.set_state("bot", (1, 2, 1), quaternion_from_rpy(0, 0, 0.5), (0.3, 0, 0), (0, 0, 2.0))
+    for link in ("base_footprint", "left_wheel"):
+        ref = world.find_link(f"bot::{link}")
+        assert world.link_pose(ref)[0] == pytest.approx(bot.robot.link_pose(link)[0])
+    base = np.asarray(world.link_pose(LinkRef("bot", "base_footprint"))[0])
+    wheel = np.asarray(world.link_pose(LinkRef("bot", "left_wheel"))[0])
+    # a rigid motion: the wheel's origin moves at v + ω × r
+    linear, angular = world.link_twist(LinkRef("bot", "left_wheel"))
+    expected = np.array([0.3, 0, 0]) + np.cross([0, 0, 2.0], wheel - base)
+    np.testing.assert_allclose(linear, expected, atol=1e-6)
+    np.testing.assert_allclose(angular, (0, 0, 2.0), atol=1e-6)
+
+
+def test_link_states_list_every_link_of_every_model(world, bot):
+    names = [state[0] for state in world.link_states()]
+    assert names == ["ground::link", "bot::base_footprint", "bot::left_wheel",
+                     "bot::right_wheel"]
+    for name, position, orientation, _, _ in world.link_states():
+        expected_position, expected_orientation = world.link_pose(world.find_link(name))
+        assert position == pytest.approx(expected_position)
+        assert orientation == pytest.approx(expected_orientation)
+
+
+def test_setting_the_canonical_link_moves_the_model(world, bot):
+    heading = quaternion_from_rpy(0, 0, 1.0)
+    world.set_link_state(LinkRef("bot", "base_footprint"), (2.0, 1.0, 0.0), heading)
+    position, orientation = world.pose("bot")
+    assert position == pytest.approx((2.0, 1.0, 0.0))
+    assert yaw_from_quaternion(orientation) == pytest.approx(1.0)
+    wheel, _ = world.link_pose(LinkRef("bot", "left_wheel"))
+    # the wheel came along: 0.17 m to the left of the base, 0.05 m up
+    assert wheel == pytest.approx((2.0 - 0.17 * math.sin(1.0), 1.0 + 0.17 * math.cos(1.0),
+                                   0.05), abs=1e-6)
+
+
+def test_another_link_of_a_robot_cannot_be_placed_apart(world, bot):
+    with pytest.raises(SimError, match="hangs on joint 'left_wheel_joint'.*set_model_config"):
+        world.set_link_state(LinkRef("bot", "left_wheel"), (0, 0, 1), (0, 0, 0, 1))
+
+
+def test_a_free_bodys_model_and_link_frames_differ_by_the_links_pose(world):
+    # the link 0.15 m above the model frame, its centre of mass 0.05 m further up
+    free_box(world, pose=(1, 0, 0.5, 0, 0, 0), link_pose=(0, 0, 0.15, 0, 0, 0),
+             inertial_pose=(0, 0, 0.05, 0, 0, 0))
+    ref = LinkRef("box", "link")
+    assert world.pose("box")[0] == pytest.approx((1, 0, 0.5))
+    assert world.link_pose(ref)[0] == pytest.approx((1, 0, 0.65))
+    world.set_link_state(ref, (3, 0, 2.15), (0, 0, 0, 1), linear=(1, 0, 0))
+    assert world.pose("box")[0] == pytest.approx((3, 0, 2.0))
+    assert world.twist("box")[0] == pytest.approx((1, 0, 0))
+    world.reset()
+    assert world.link_pose(ref)[0] == pytest.approx((1, 0, 0.65))
+
+
+# --- physics properties -----------------------------------------------------------------
+def test_physics_properties_are_reported_and_set(world):
+    properties = world.physics_properties()
+    assert properties.time_step == 0.001 and properties.gravity == (0.0, 0.0, -9.8)
+    assert properties.max_update_rate == pytest.approx(1000.0)  # real time
+    assert properties.ode["sor_pgs_iters"] == 50 and properties.ode["erp"] == 0.2
+    world.set_physics(0.002, 250.0, (0.0, 0.0, -1.0))
+    assert world.real_time_factor == pytest.approx(0.5)
+    before = world.now_ns
+    world.step()
+    assert world.now_ns - before == 2_000_000
+    assert world.physics_properties().gravity == (0.0, 0.0, -1.0)
+
+
+@pytest.mark.parametrize("time_step, rate, gravity, words", [
+    (0.0, 1000.0, (0, 0, -9.8), "time_step 0.0 must be a positive"),
+    (float("nan"), 1000.0, (0, 0, -9.8), "time_step nan"),
+    (0.001, -1.0, (0, 0, -9.8), "max_update_rate -1.0"),
+    (0.001, 1000.0, (0, 0, float("inf")), "gravity"),
+])
+def test_bad_physics_properties_are_refused_and_nothing_changes(world, time_step, rate,
+                                                                 gravity, words):
+    with pytest.raises(SimError, match=words):
+        world.set_physics(time_step, rate, gravity)
+    assert world.physics_properties().time_step == 0.001
+    assert world.physics_properties().gravity == (0.0, 0.0, -9.8)
+
+
+def test_without_gravity_a_dropped_body_floats(weightless):
+    free_box(weightless)
+    run(weightless, 1.0)
+    assert weightless.pose("box")[0] == pytest.approx((0, 0, 1), abs=1e-9)
+
+
+def test_plugins_see_the_new_gravity(world, bus):
+    with open(f"{DATA}/gadget_bot.urdf", encoding="utf-8") as stream:
+        world.spawn_urdf("gadget", stream.read(), (0, 0, 0.001))
+    run(world, 0.3)
+    assert bus.last("/imu").linear_acceleration.z == pytest.approx(9.8, abs=0.05)
+    world.set_physics(world.step_size, world.max_update_rate, (0, 0, -3.0))
+    run(world, 0.3)
+    assert bus.last("/imu").linear_acceleration.z == pytest.approx(3.0, abs=0.05)
+
+
+# --- wrenches ---------------------------------------------------------------------------
+def test_a_force_for_a_while_changes_velocity_by_f_d_over_m(weightless):
+    free_box(weightless)
+    weightless.apply_wrench("box::link", (4.0, 0, 0), (0, 0, 0), duration_ns=SECOND // 2)
+    run(weightless, 1.0)
+    linear, angular = weightless.twist("box")
+    assert linear == pytest.approx((4.0 * 0.5 / BOX_MASS, 0, 0), abs=1e-6)
+    assert angular == pytest.approx((0, 0, 0), abs=1e-9)
+    assert not weightless.forces  # over, dropped
+
+
+def test_a_torque_changes_angular_velocity_by_t_d_over_i(weightless):
+    free_box(weightless)
+    weightless.apply_wrench("box::link", (0, 0, 0), (0, 0, 0.1), duration_ns=SECOND // 2)
+    run(weightless, 1.0)
+    assert weightless.twist("box")[1] == pytest.approx((0, 0, 0.05 / BOX_INERTIA), rel=1e-3)
+
+
+def test_a_wrench_waits_for_its_start_time(weightless):
+    free_box(weightless)
+    weightless.apply_wrench("box::link", (2.0, 0, 0), (0, 0, 0), start_ns=SECOND // 2,
+                            duration_ns=SECOND // 10)
+    run(weightless, 0.4)
+    assert weightless.twist("box")[0][0] == 0.0
+    run(weightless, 0.6)
+    assert weightless.twist("box")[0][0] == pytest.approx(2.0 * 0.1 / BOX_MASS, abs=1e-6)
+
+
+def test_a_wrench_without_end_lasts_until_cleared(weightless):
+    free_box(weightless)
+    weightless.apply_wrench("box::link", (1.0, 0, 0), (0, 0, 0), duration_ns=-1)
+    run(weightless, 0.5)
+    assert weightless.clear_wrenches("box::link") == 1
+    speed = weightless.twist("box")[0][0]
+    assert speed == pytest.approx(0.5 / BOX_MASS, abs=1e-6)
+    run(weightless, 0.5)
+    assert weightless.twist("box")[0][0] == pytest.approx(speed, abs=1e-9)
+
+
+def test_a_wrench_in_a_links_frame_turns_with_it(weightless):
+    free_box(weightless, pose=(0, 0, 1, 0, 0, math.pi / 2))
+    weightless.apply_wrench("box::link", (1.0, 0, 0), (0, 0, 0), reference_frame="box::link",
+                            duration_ns=SECOND)
+    run(weightless, 1.0)
+    # the box's x axis is the world's y
+    assert weightless.twist("box")[0] == pytest.approx((0, 1.0 / BOX_MASS, 0), abs=1e-6)
+
+
+def test_a_force_off_the_centre_of_mass_turns_the_body(weightless):
+    free_box(weightless)
+    # 1 N up, 0.1 m along x from the centre: a torque of 0.1 N m about -y
+    weightless.apply_wrench("box::link", (0, 0, 1.0), (0, 0, 0), reference_point=(0.1, 0, 0),
+                            duration_ns=SECOND // 10)
+    run(weightless, 0.1)
+    linear, angular = weightless.twist("box")
+    assert linear[2] == pytest.approx(0.1 / BOX_MASS, rel=1e-3)
+    assert angular == pytest.approx((0, -0.1 * 0.1 / BOX_INERTIA, 0), rel=1e-3)
+
+
+def test_a_wrench_on_a_robots_lumped_body_moves_the_robot(weightless, bot):
+    mass = 5.0 + 2 * 0.5 + 2 * 0.1 + 0.2  # base, wheels, casters, laser
+    weightless.set_state("bot", (0, 0, 1), (0, 0, 0, 1))
+    weightless.apply_wrench("bot::base_footprint", (mass, 0, 0), (0, 0, 0),
+                            duration_ns=SECOND // 2)
+    run(weightless, 0.5)
+    assert weightless.twist("bot")[0][0] == pytest.approx(0.5, rel=0.03)
+
+
+@pytest.mark.parametrize("name, arguments, words", [
+    ("box::nothing", {}, "model 'box' has no link 'nothing'"),
+    ("ground::link", {}, "static model 'ground': forces move nothing"),
+    ("box::link", {"force": (float("nan"), 0, 0)}, "the force"),
+    ("box::link", {"reference_frame": "nowhere"}, "reference frame 'nowhere'"),
+])
+def test_wrenches_that_cannot_be_applied_are_refused(world, name, arguments, words):
+    free_box(world)
+    arguments = {"force": (1, 0, 0), "torque": (0, 0, 0), **arguments}
+    with pytest.raises(SimError, match=words):
+        world.apply_wrench(name, **arguments)
+    assert not world.forces
+
+
+# --- joint efforts ----------------------------------------------------------------------
+@pytest.fixture
+def rotor(world):
+    return world.spawn_urdf("rotor", ROTOR, (0, 0, 0))
+
+
+def test_an_effort_turns_a_joint_by_t_d_over_i(world, rotor):
+    # the disc turns about z: I = 0.2 kg m²; 0.5 N m for 0.4 s
+    world.apply_joint_effort("spin", 0.5, duration_ns=int(0.4 * SECOND))
+    run(world, 0.4)
+    position, velocity = rotor.robot.joint_position_velocity("spin")
+    assert velocity == pytest.approx(0.5 * 0.4 / 0.2, rel=1e-3)
+    assert position == pytest.approx(0.5 * (0.5 / 0.2) * 0.4 ** 2, rel=0.01)
+    run(world, 0.2)  # over: the disc turns on at the same speed
+    assert rotor.robot.joint_position_velocity("spin")[1] == pytest.approx(velocity, rel=1e-3)
+    # the link's state says so too
+    assert world.link_twist(world.find_link("rotor::disc"))[1][2] == pytest.approx(velocity)
+
+
+def test_an_effort_without_end_lasts_until_cleared(world, rotor):
+    world.apply_joint_effort("rotor::spin", 0.2, duration_ns=-1)
+    run(world, 0.5)
+    assert world.clear_joint_efforts("spin") == 1
+    velocity = rotor.robot.joint_position_velocity("spin")[1]
+    assert velocity == pytest.approx(0.2 * 0.5 / 0.2, rel=1e-3)
+    run(world, 0.5)
+    assert rotor.robot.joint_position_velocity("spin")[1] == pytest.approx(velocity, rel=1e-3)
+
+
+@pytest.mark.parametrize("name, words", [
+    ("fix", "joint 'rotor::fix' is fixed"),
+    ("bot::base_joint", "fixed joint Gazebo lumps away"),
+    ("elbow", "no joint named 'elbow'"),
+])
+def test_efforts_that_cannot_be_applied_are_refused(world, rotor, bot, name, words):
+    with pytest.raises(SimError, match=words):
+        world.apply_joint_effort(name, 1.0)
+
+
+def test_deleting_a_model_ends_its_forces(world, rotor):
+    world.apply_joint_effort("spin", 0.2, duration_ns=-1)
+    world.delete("rotor")
+    assert not world.forces
+    run(world, 0.01)

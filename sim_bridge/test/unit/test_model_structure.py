@@ -1,0 +1,65 @@
+"""Gazebo's names for a model's parts: sdformat's lumping of fixed joints, kept joints,
+collision names. No pybullet."""
+from sim_bridge.model_structure import sdf_structure, urdf_structure
+from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec
+from urdf_tools.model import parse_urdf
+
+ROTOR = """<robot name="rotor">
+  <link name="world"/>
+  <link name="base"><inertial><mass value="1"/>
+    <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+  <joint name="fix" type="fixed"><parent link="world"/><child link="base"/>
+    <origin xyz="0 0 0.5"/></joint>
+  <link name="disc"><collision><geometry><cylinder radius="0.3" length="0.05"/></geometry>
+    </collision><inertial><mass value="2"/>
+    <inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.2"/></inertial></link>
+  <joint name="spin" type="continuous"><parent link="base"/><child link="disc"/>
+    <axis xyz="0 0 1"/></joint>
+</robot>"""
+
+
+def test_fixed_joints_are_lumped_into_their_parent(diff_bot_xml):
+    structure = urdf_structure(parse_urdf(diff_bot_xml()))
+    # base_link hangs on base_footprint by a fixed joint, casters and laser on base_link
+    assert structure.bodies == ("base_footprint", "left_wheel", "right_wheel")
+    assert structure.canonical == "base_footprint"
+    assert structure.joints == ("left_wheel_joint", "right_wheel_joint")
+    assert structure.body_of["laser"] == "base_footprint"
+    assert structure.lumped_by == {"base_link": "base_joint", "back_caster": "back_caster_joint",
+                                   "front_caster": "front_caster_joint",
+                                   "laser": "laser_joint"}
+    assert structure.links_of("base_footprint") == ["base_footprint", "base_link",
+                                                     "back_caster", "front_caster", "laser"]
+    # sdformat's names: the lumped link's own name inside, an index after the first
+    assert structure.geoms == (
+        "base_footprint_fixed_joint_lump__base_link_collision",
+        "base_footprint_fixed_joint_lump__back_caster_collision_1",
+        "base_footprint_fixed_joint_lump__front_caster_collision_2",
+        "base_footprint_fixed_joint_lump__laser_collision_3",
+        "left_wheel_collision", "right_wheel_collision")
+
+
+def test_preserve_fixed_joint_keeps_the_link_and_its_joint(diff_bot_xml):
+    xml = diff_bot_xml().replace(
+        "</robot>", '<gazebo reference="laser_joint"><preserveFixedJoint>true'
+                    "</preserveFixedJoint></gazebo></robot>")
+    structure = urdf_structure(parse_urdf(xml))
+    assert structure.bodies == ("base_footprint", "laser", "left_wheel", "right_wheel")
+    assert structure.joints == ("laser_joint", "left_wheel_joint", "right_wheel_joint")
+    assert "laser_collision" in structure.geoms
+    assert "laser" not in structure.lumped_by
+
+
+def test_a_robot_fixed_to_the_world_keeps_that_joint_and_has_no_world_link():
+    structure = urdf_structure(parse_urdf(ROTOR))
+    assert structure.bodies == ("base", "disc")
+    assert structure.joints == ("fix", "spin")
+    assert structure.geoms == ("disc_collision",)
+
+
+def test_sdf_models_are_their_links():
+    spec = ModelSpec("crates", True, links=[
+        LinkSpec("a", collisions=[ShapeSpec("box"), ShapeSpec("box")]), LinkSpec("b")])
+    structure = sdf_structure(spec)
+    assert structure.bodies == ("a", "b") and structure.joints == ()
+    assert structure.geoms == ("a_collision", "a_collision_1")
