@@ -6,7 +6,13 @@
 - ``<gazebo reference="link">`` holding ``<sensor>``: a sensor on that link, with its own
   plugin (:class:`SensorSpec`).
 
-Parameter values stay as text here; each plugin reads its own with its defaults.
+Parameter values stay as text here; each plugin reads its own with its defaults. A value may
+be written as text or, as some robot files do, as an attribute: ``<mu1 value="0.5"/>`` is
+read like ``<mu1>0.5</mu1>`` (Gazebo's URDF reader takes both).
+
+Tags that Gazebo knows but sim_bridge does not emulate are collected in
+:attr:`GazeboTags.not_emulated` (tag → where it was first seen), so that the simulator warns
+once per tag, naming it, instead of ignoring it silently.
 """
 from __future__ import annotations
 
@@ -18,6 +24,11 @@ from urdf_tools.model import RobotModel, UrdfError
 
 # Gazebo's ODE defaults: mu = mu2 = 1; no self collision; gravity on.
 DEFAULT_MU = 1.0
+# <gazebo reference="joint"> tags with no effect here (pybullet's joints are exact, and
+# fixed joints are kept); reported once each.
+JOINT_TAGS_NOT_EMULATED = ("stopCfm", "stopErp", "fudgeFactor", "provideFeedback",
+                           "implicitSpringDamper", "cfmDamping", "springStiffness",
+                           "springReference", "preserveFixedJoint", "disableFixedJointLumping")
 
 
 @dataclass
@@ -63,6 +74,8 @@ class GazeboTags:
     plugins: List[PluginSpec]
     sensors: List[SensorSpec]
     self_collide: bool = False
+    # tag → where it was first seen, for tags read but not emulated
+    not_emulated: Dict[str, str] = field(default_factory=dict)
 
 
 def _float(text: str, what: str, source: str) -> float:
@@ -76,11 +89,19 @@ def _bool(text: str) -> bool:
     return text.strip().lower() in ("1", "true")
 
 
+def value_of(element: ET.Element) -> str:
+    """An element's value: its text, or its ``value`` attribute (``<mu1 value="0.5"/>``)."""
+    text = (element.text or "").strip()
+    if not text and element.get("value") is not None:
+        return element.get("value", "").strip()
+    return text
+
+
 def _plugin(element: ET.Element, reference: Optional[str], source: str) -> PluginSpec:
     filename = element.get("filename", "")
     if not filename:
         raise UrdfError(f"{source}: a <plugin> has no filename")
-    params = {child.tag: (child.text or "").strip() for child in element}
+    params = {child.tag: value_of(child) for child in element}
     return PluginSpec(element.get("name", filename), filename, params, element, reference)
 
 
@@ -90,14 +111,18 @@ def read_gazebo_tags(model: RobotModel) -> GazeboTags:
     plugins: List[PluginSpec] = []
     sensors: List[SensorSpec] = []
     robot_self_collide = False
+    not_emulated: Dict[str, str] = {}
     for reference, block in model.gazebo:
         if reference is not None and reference not in model.links:
             if reference in model.joints:
-                continue  # joint blocks (provideFeedback...) mean nothing here
+                for child in block:
+                    if child.tag in JOINT_TAGS_NOT_EMULATED:
+                        not_emulated.setdefault(child.tag, f"joint '{reference}'")
+                continue
             raise UrdfError(f"{source}: <gazebo reference='{reference}'> names no link")
         for child in block:
             tag = child.tag
-            text = (child.text or "").strip()
+            text = value_of(child)
             if tag == "plugin":
                 plugins.append(_plugin(child, reference, source))
             elif tag == "sensor":
@@ -111,6 +136,8 @@ def read_gazebo_tags(model: RobotModel) -> GazeboTags:
             elif reference is None:
                 if tag == "self_collide":
                     robot_self_collide = _bool(text)
+                else:  # static, enable_wind, ...
+                    not_emulated.setdefault(tag, "the robot's <gazebo>")
             else:
                 surface = surfaces.setdefault(reference, LinkSurface())
                 what = f"<gazebo reference='{reference}'> <{tag}>"
@@ -130,7 +157,9 @@ def read_gazebo_tags(model: RobotModel) -> GazeboTags:
                     surface.self_collide = _bool(text)
                 elif tag in ("gravity", "turnGravityOff"):
                     surface.gravity = _bool(text) if tag == "gravity" else not _bool(text)
-    return GazeboTags(surfaces, plugins, sensors, robot_self_collide)
+                else:  # fdir1, maxVel, maxContacts, dampingFactor, laserRetro, ...
+                    not_emulated.setdefault(tag, f"link '{reference}'")
+    return GazeboTags(surfaces, plugins, sensors, robot_self_collide, not_emulated)
 
 
 def plugin_joint_names(spec: PluginSpec, tags: Tuple[str, ...]) -> List[str]:

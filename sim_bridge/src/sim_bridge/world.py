@@ -48,6 +48,12 @@ Vec3 = Tuple[float, float, float]
 Quat = Tuple[float, float, float, float]
 Transform = Tuple[Vec3, Quat]
 IDENTITY: Transform = ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))
+# A robot spawned into the scenery is raised out of what lies under it: contacts deeper than
+# this (m) whose normal points up at least this much (cos of 60 degrees), a few rounds at most
+# (each round clears the deepest contact; a slope may uncover another).
+PENETRATION_TOLERANCE = 0.001
+MIN_FLOOR_NORMAL_Z = 0.5
+MAX_LIFTS = 5
 # reference frames that mean the world (gazebo_ros: "", world, map, /map)
 WORLD_FRAMES = frozenset(("", "world", "/world", "map", "/map"))
 # ODE's settings as Gazebo's worlds have them, reported by get_physics_properties (the
@@ -458,16 +464,20 @@ class World:
             raise SimError(f"the initial orientation: {error}") from None
         description = parse_urdf(xml, source or f"model '{name}'")
         tags = read_gazebo_tags(description)
+        for tag, where in tags.not_emulated.items():
+            self.bus.warn(f"model '{name}': <{tag}> in {where} is not emulated by sim_bridge; "
+                          "ignored")
         joints = dict(joints or {})
         unknown = [j for j in joints if j not in description.joints]
         if unknown:
             raise SimError(f"model '{name}' has no joint(s) {', '.join(unknown)}")
         robot = RobotBody(self.client, description, tags, xml, position, orientation,
                           self.bus.warn)
+        robot.reset_joints(joints)
+        position = self._lifted_out_of_scenery(robot, position, orientation, name)
         model = Model(name, "robot", tuple(position), tuple(orientation), namespace.strip("/"),
                       robot=robot, tags=tags, body=robot.id, initial_joints=joints,
                       structure=urdf_structure(description))
-        robot.reset_joints(joints)
         context = PluginContext(self.client, robot, name, model.namespace, self.bus,
                                 np.random.default_rng([self.seed, len(self.models)]),
                                 self.step_size, self.gravity, self.cast_rays, tf_prefix)
@@ -486,6 +496,33 @@ class World:
         self.models[name] = model
         self._scene_changed()
         return model
+
+    def _lifted_out_of_scenery(self, robot: RobotBody, position: Sequence[float],
+                               orientation: Sequence[float], name: str) -> Vec3:
+        """The spawn position raised until no collision shape is sunk in static scenery below
+        it. Many packages spawn at -z 0 with their wheels under the base link: Gazebo lifts
+        such a robot gently (ODE's correcting velocity is capped); pybullet's correction of
+        a deep penetration would throw it metres into the air. The robot is moved before its
+        first step, and the raised pose is the one reset returns to."""
+        scenery = [body for model in self.models.values() if model.kind == "static"
+                   for body in model.static_bodies]
+        lifted = np.asarray(position, dtype=float)
+        for _ in range(MAX_LIFTS):
+            sunk = 0.0
+            for body in scenery:
+                for point in pb.getClosestPoints(robot.id, body, 0.0,
+                                                 physicsClientId=self.client):
+                    depth, normal_z = -point[8], point[7][2]
+                    if depth > PENETRATION_TOLERANCE and normal_z > MIN_FLOOR_NORMAL_Z:
+                        sunk = max(sunk, depth / normal_z)
+            if sunk == 0.0:
+                break
+            lifted[2] += sunk
+            robot.set_base_state(lifted, orientation)
+        if lifted[2] != position[2]:
+            self.bus.info(f"model '{name}': spawned {lifted[2] - position[2]:.3f} m into the "
+                          f"ground; set on it (z {lifted[2]:.3f})")
+        return (float(lifted[0]), float(lifted[1]), float(lifted[2]))
 
     # --- requests ------------------------------------------------------------------------
     def model(self, name: str) -> Model:

@@ -1,0 +1,54 @@
+"""The <gazebo> tag reader: values as text or as attributes; tags Gazebo reads that
+sim_bridge does not emulate are named, once each."""
+from sim_bridge.gazebo_tags import read_gazebo_tags
+from urdf_tools.model import parse_urdf
+
+ROBOT = """<robot name="r">
+  <link name="base"><inertial><mass value="1"/>
+    <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+  <link name="wheel"><inertial><mass value="1"/>
+    <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+  <joint name="axle" type="continuous"><parent link="base"/><child link="wheel"/></joint>
+  <gazebo reference="wheel">
+    <mu1 value="0.5"/>
+    <mu2>0.25</mu2>
+    <kp value="1e6"/>
+    <fdir1>1 0 0</fdir1>
+    <maxVel>0.1</maxVel>
+    <material value="Gazebo/Red"/>
+  </gazebo>
+  <gazebo reference="base"><maxVel>0.2</maxVel></gazebo>
+  <gazebo reference="axle"><provideFeedback>true</provideFeedback></gazebo>
+  <gazebo>
+    <static>false</static>
+    <plugin name="drive" filename="libgazebo_ros_diff_drive.so">
+      <leftJoint value="axle"/>
+      <rightJoint>axle</rightJoint>
+    </plugin>
+  </gazebo>
+</robot>"""
+
+
+def tags():
+    return read_gazebo_tags(parse_urdf(ROBOT, "test robot"))
+
+
+def test_attribute_values_read_like_text():
+    surface = tags().surfaces["wheel"]
+    assert (surface.mu1, surface.mu2, surface.kp) == (0.5, 0.25, 1e6)
+    assert surface.material == "Gazebo/Red"
+    plugin = tags().plugins[0]
+    assert plugin.text("leftJoint") == "axle" and plugin.text("rightJoint") == "axle"
+
+
+def test_tags_not_emulated_are_named_once_with_where_first_seen():
+    assert tags().not_emulated == {"fdir1": "link 'wheel'", "maxVel": "link 'wheel'",
+                                   "provideFeedback": "joint 'axle'",
+                                   "static": "the robot's <gazebo>"}
+
+
+def test_the_world_warns_once_per_tag(world, bus):
+    world.spawn_urdf("r", ROBOT, (0, 0, 0.5))
+    warnings = [w for w in bus.warnings if "not emulated" in w]
+    assert len([w for w in warnings if "<maxVel>" in w]) == 1
+    assert any("<fdir1> in link 'wheel'" in w for w in warnings)
