@@ -174,6 +174,9 @@ class RosBus(Bus):
     def warn(self, text):
         rospy.logwarn(text)
 
+    def debug(self, text):
+        rospy.logdebug(text)
+
     def warn_throttled(self, key, period, text):
         now = time.monotonic()
         if now - self._throttle.get(key, -math.inf) >= period:

@@ -2,15 +2,25 @@
 
 ``MODEL_PLUGINS`` maps a model plugin's filename to its class; ``SENSOR_PLUGINS`` maps a
 sensor plugin's filename to its class and the sensor types it serves. Anything else gets
-one warning that names it, and the robot runs without it.
+one warning that names it, and the robot runs without it; so does a plugin that cannot run
+as written (see ``_build``).
+
+A ``<sensor>`` without a plugin publishes nothing to ROS, in Gazebo as here. It warns,
+unless a model plugin reads its link (``<bodyName>``): TurtleBot3 marks its ``imu_link``
+with a plugin-less ``<sensor type="imu">`` and reads it with ``libgazebo_ros_imu.so``,
+which is as intended and gets a debug note at most.
 """
 from __future__ import annotations
 
-from typing import List
+import dataclasses
+from typing import Callable, List, Set
 
 from sim_bridge.gazebo_tags import GazeboTags
-from sim_bridge.plugins.base import Plugin, PluginContext, PluginError
+from sim_bridge.plugins.base import Plugin, PluginContext, PluginError, TrackingBus
 from sim_bridge.plugins.diff_drive import DiffDrive
+from sim_bridge.plugins.gazebo_ros_imu import GazeboRosImu
+from sim_bridge.plugins.hector_gps import HectorGps
+from sim_bridge.plugins.hector_imu import HectorImu
 from sim_bridge.plugins.imu import ImuSensor
 from sim_bridge.plugins.joint_state_publisher import JointStatePublisher
 from sim_bridge.plugins.laser import Laser
@@ -26,7 +36,12 @@ MODEL_PLUGINS = {
     "libgazebo_ros_p3d.so": P3D,
     "libgazebo_ros_planar_move.so": PlanarMove,
     "libgazebo_ros_control.so": RosControl,
+    "libgazebo_ros_imu.so": GazeboRosImu,
+    "libhector_gazebo_ros_imu.so": HectorImu,
+    "libhector_gazebo_ros_gps.so": HectorGps,
 }
+# model plugins whose <bodyName> defaults to the model's canonical link when absent
+BODY_DEFAULTS_TO_CANONICAL = ("libhector_gazebo_ros_imu.so", "libhector_gazebo_ros_gps.so")
 SENSOR_PLUGINS = {
     "libgazebo_ros_laser.so": (Laser, ("ray", "gpu_ray")),
     "libgazebo_ros_gpu_laser.so": (Laser, ("ray", "gpu_ray")),
@@ -34,17 +49,61 @@ SENSOR_PLUGINS = {
 }
 
 
+def links_read_by_model_plugins(tags: GazeboTags, canonical: str) -> Set[str]:
+    """The links that emulated model plugins read through ``<bodyName>``."""
+    links = set()
+    for spec in tags.plugins:
+        if spec.filename not in MODEL_PLUGINS:
+            continue
+        body = spec.text("bodyName")
+        if body is None and spec.filename in BODY_DEFAULTS_TO_CANONICAL:
+            body = canonical
+        if body:
+            links.add(body.rpartition("::")[2])
+    return links
+
+
+def _build(context: PluginContext, what: str, make: Callable[[PluginContext], Plugin],
+           built: List[Plugin]) -> None:
+    """Builds one plugin on a bus that keeps what it opens. A plugin that cannot run as
+    written (a joint the model lacks, no transmission, a bad number) is left out with a
+    warning naming it and the cause, and whatever it opened is closed: Gazebo loads the
+    robot, says the plugin will not run, and the rest works."""
+    tracking = TrackingBus(context.bus)
+    try:
+        built.append(make(dataclasses.replace(context, bus=tracking)))
+    except PluginError as error:
+        tracking.close_all()
+        context.bus.warn(f"model '{context.model_name}': {what} not loaded: {error}; the "
+                         "model is spawned without it")
+
+
 def create_plugins(context: PluginContext, tags: GazeboTags) -> List[Plugin]:
     plugins: List[Plugin] = []
+    try:
+        _create_plugins(context, tags, plugins)
+    except Exception:  # an error of ours: close what was built, the spawn is refused
+        for plugin in plugins:
+            plugin.close()
+        raise
+    return plugins
+
+
+def _create_plugins(context: PluginContext, tags: GazeboTags, plugins: List[Plugin]) -> None:
+    read_links = links_read_by_model_plugins(tags, context.robot.model.root())
     for spec in tags.plugins:
         plugin_class = MODEL_PLUGINS.get(spec.filename)
         if plugin_class is None:
             context.bus.warn(f"model '{context.model_name}': plugin '{spec.name}' "
                              f"({spec.filename}) is not emulated by sim_bridge; ignored")
             continue
-        plugins.append(plugin_class(context, spec))
+        _build(context, f"plugin '{spec.name}' ({spec.filename})",
+               lambda tracked, cls=plugin_class, spec=spec: cls(tracked, spec), plugins)
     for sensor in tags.sensors:
-        if not sensor.plugins:
+        if not sensor.plugins and sensor.link in read_links:
+            context.bus.debug(f"model '{context.model_name}': sensor '{sensor.name}' has no "
+                              f"plugin; its link '{sensor.link}' is read by a model plugin")
+        elif not sensor.plugins:
             context.bus.warn(f"model '{context.model_name}': sensor '{sensor.name}' has no "
                              "plugin, so nothing publishes it; ignored")
         for spec in sensor.plugins:
@@ -54,8 +113,9 @@ def create_plugins(context: PluginContext, tags: GazeboTags) -> List[Plugin]:
                                  f"'{sensor.type}' with plugin {spec.filename} is not emulated "
                                  "by sim_bridge; ignored")
                 continue
-            plugins.append(entry[0](context, spec, sensor))
-    return plugins
+            _build(context, f"sensor '{sensor.name}' plugin '{spec.name}' ({spec.filename})",
+                   lambda tracked, cls=entry[0], spec=spec, sensor=sensor:
+                   cls(tracked, spec, sensor), plugins)
 
 
 __all__ = ["create_plugins", "MODEL_PLUGINS", "SENSOR_PLUGINS", "PluginError"]

@@ -54,8 +54,63 @@ class Bus:
     def warn_throttled(self, key: str, period: float, text: str) -> None:
         raise NotImplementedError
 
+    def debug(self, text: str) -> None:
+        """A note for whoever runs with verbose:=true; nothing by default."""
+
     def get_param(self, name: str, default: Any = None) -> Any:
         return default
+
+
+class TrackingBus(Bus):
+    """A bus that keeps what a plugin opened through it, so that a plugin that fails while
+    it is being built can be taken out without leaving a publisher, a subscriber or a
+    service behind (Gazebo loads the robot without that plugin; nothing of it stays)."""
+
+    def __init__(self, bus: Bus):
+        self.bus = bus
+        self.opened: list = []
+
+    def _keep(self, handle):
+        self.opened.append(handle)
+        return handle
+
+    def publisher(self, topic, msg_class, queue_size=10, latch=False):
+        return self._keep(self.bus.publisher(topic, msg_class, queue_size, latch))
+
+    def subscriber(self, topic, msg_class, callback):
+        return self._keep(self.bus.subscriber(topic, msg_class, callback))
+
+    def service(self, name, srv_class, handler):
+        return self._keep(self.bus.service(name, srv_class, handler))
+
+    def action_server(self, name, action_class, on_goal, on_cancel):
+        return self._keep(self.bus.action_server(name, action_class, on_goal, on_cancel))
+
+    def send_transforms(self, transforms):
+        self.bus.send_transforms(transforms)
+
+    def info(self, text):
+        self.bus.info(text)
+
+    def debug(self, text):
+        self.bus.debug(text)
+
+    def warn(self, text):
+        self.bus.warn(text)
+
+    def warn_throttled(self, key, period, text):
+        self.bus.warn_throttled(key, period, text)
+
+    def get_param(self, name, default=None):
+        return self.bus.get_param(name, default)
+
+    def close_all(self) -> None:
+        """Unregisters / shuts down everything opened through this bus."""
+        for handle in reversed(self.opened):
+            close = getattr(handle, "shutdown", None) or getattr(handle, "unregister", None)
+            if close is not None:
+                close()
+        self.opened.clear()
 
 
 @dataclass

@@ -1,0 +1,48 @@
+"""A plugin that cannot run as written is left out with a warning naming it and the cause,
+and the model spawns, as Gazebo loads it; nothing the plugin opened stays behind."""
+from world_fixtures import run
+
+BASE = """<link name="base"><inertial><mass value="1"/>
+  <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+  <collision><geometry><box size="0.2 0.2 0.2"/></geometry></collision></link>"""
+
+
+def robot(gazebo):
+    return f'<robot name="r">{BASE}<gazebo>{gazebo}</gazebo></robot>'
+
+
+# a list of joints where one is expected (seen in a tutorial's four-wheel robot)
+JOINT_LIST = robot("""<plugin name="drive" filename="libgazebo_ros_diff_drive.so">
+  <leftJoint>front_left_wheel_joint, rear_left_wheel_joint</leftJoint>
+  <rightJoint>front_right_wheel_joint</rightJoint></plugin>
+  <plugin name="truth" filename="libgazebo_ros_p3d.so"><bodyName>base</bodyName>
+  <topicName>ground_truth</topicName><updateRate>100</updateRate></plugin>""")
+NO_TRANSMISSION = robot("""<plugin name="gazebo_ros_control"
+  filename="libgazebo_ros_control.so"><robotNamespace>/r</robotNamespace></plugin>""")
+
+
+def test_a_plugin_naming_joints_the_model_lacks_is_skipped_and_the_rest_runs(world, bus):
+    world.spawn_urdf("r", JOINT_LIST, (0, 0, 0.1))
+    assert "r" in world.models
+    (warning,) = [w for w in bus.warnings if "not loaded" in w]
+    assert "plugin 'drive'" in warning and "front_left_wheel_joint, rear_left_wheel_joint" \
+        in warning and "spawned without it" in warning
+    # what the skipped plugin opened is closed; the other plugin publishes
+    assert "/odom" in bus.closed and "/cmd_vel" in bus.closed
+    run(world, 0.1)
+    assert bus.published["/ground_truth"]
+
+
+def test_ros_control_without_transmissions_warns_and_serves_no_controller_manager(world, bus):
+    world.spawn_urdf("r", NO_TRANSMISSION, (0, 0, 0.1))
+    assert "r" in world.models
+    assert any("gazebo_ros_control" in w and "<transmission>" in w for w in bus.warnings)
+    assert not [name for name in bus.services if "controller_manager" in name]
+
+
+def test_a_deleted_model_with_a_skipped_plugin_leaves_the_world_consistent(world, bus):
+    world.spawn_urdf("r", NO_TRANSMISSION, (0, 0, 0.1))
+    world.delete("r")
+    world.spawn_urdf("r", NO_TRANSMISSION, (0, 0, 0.1))
+    run(world, 0.1)
+    assert list(world.models) == ["ground", "r"]
