@@ -37,7 +37,7 @@ apt_packages=(
   librostest-dev
   python3-tf libroscpp-dev liburdf-dev libtf-dev libtf2-ros-dev libtf2-geometry-msgs-dev
   libsensor-msgs-dev libnav-msgs-dev libstd-srvs-dev libroslib-dev python3-pyqt5
-  python3-python-qt-binding
+  python3-python-qt-binding libdiagnostic-msgs-dev python3-diagnostic-msgs
   ros-robot-state-publisher joint-state-publisher joint-state-publisher-gui rviz
   liburdfdom-tools
   xvfb xauth x11-utils xdotool imagemagick
