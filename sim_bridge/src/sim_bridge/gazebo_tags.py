@@ -18,12 +18,15 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
-from typing import Dict, List, Optional, Tuple
+from typing import Dict, List, Optional, Set, Tuple
 
 from urdf_tools.model import RobotModel, UrdfError
 
 # Gazebo's ODE defaults: mu = mu2 = 1; no self collision; gravity on.
 DEFAULT_MU = 1.0
+# Plugin parameters every gazebo_ros plugin takes and that change nothing here: the plugin
+# always runs, logs at the node's level, and legacyMode's wheel swap is not needed.
+READ_BY_EVERY_PLUGIN = frozenset(("alwaysOn", "rosDebugLevel", "legacyMode", "robotNamespace"))
 # <gazebo reference="joint"> tags with no effect here (pybullet's joints are exact, and
 # fixed joints are kept); reported once each.
 JOINT_TAGS_NOT_EMULATED = ("stopCfm", "stopErp", "fudgeFactor", "provideFeedback",
@@ -52,9 +55,17 @@ class PluginSpec:
     params: Dict[str, str]
     element: ET.Element
     reference: Optional[str] = None
+    # the tags the plugin asked for: what is left was written but means nothing to it
+    read: Set[str] = field(default_factory=set)
 
     def text(self, tag: str, default: Optional[str] = None) -> Optional[str]:
+        self.read.add(tag)
         return self.params.get(tag, default)
+
+    def unread(self) -> List[str]:
+        """Parameters written in the plugin that it never asked for, in file order."""
+        return [tag for tag in self.params
+                if tag not in self.read and tag not in READ_BY_EVERY_PLUGIN]
 
 
 @dataclass

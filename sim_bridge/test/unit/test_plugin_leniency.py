@@ -46,3 +46,15 @@ def test_a_deleted_model_with_a_skipped_plugin_leaves_the_world_consistent(world
     world.spawn_urdf("r", NO_TRANSMISSION, (0, 0, 0.1))
     run(world, 0.1)
     assert list(world.models) == ["ground", "r"]
+
+
+OLD_NAMES = robot("""<plugin name="truth" filename="libgazebo_ros_p3d.so">
+  <alwaysOn>true</alwaysOn><bodyName>base</bodyName><topicName>ground_truth</topicName>
+  <torque>20</torque><maxVelocity>3</maxVelocity></plugin>""")
+
+
+def test_parameters_a_plugin_does_not_read_are_named_once(world, bus):
+    world.spawn_urdf("r", OLD_NAMES, (0, 0, 0.1))
+    (warning,) = [w for w in bus.warnings if "does not read" in w]
+    assert "plugin 'truth'" in warning and "<torque>, <maxVelocity>" in warning
+    assert "alwaysOn" not in warning  # every gazebo_ros plugin takes it

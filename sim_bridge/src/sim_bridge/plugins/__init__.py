@@ -15,7 +15,7 @@ from __future__ import annotations
 import dataclasses
 from typing import Callable, List, Set
 
-from sim_bridge.gazebo_tags import GazeboTags
+from sim_bridge.gazebo_tags import GazeboTags, PluginSpec
 from sim_bridge.plugins.base import Plugin, PluginContext, PluginError, TrackingBus
 from sim_bridge.plugins.diff_drive import DiffDrive
 from sim_bridge.plugins.gazebo_ros_imu import GazeboRosImu
@@ -63,8 +63,8 @@ def links_read_by_model_plugins(tags: GazeboTags, canonical: str) -> Set[str]:
     return links
 
 
-def _build(context: PluginContext, what: str, make: Callable[[PluginContext], Plugin],
-           built: List[Plugin]) -> None:
+def _build(context: PluginContext, spec: PluginSpec, what: str,
+           make: Callable[[PluginContext], Plugin], built: List[Plugin]) -> None:
     """Builds one plugin on a bus that keeps what it opens. A plugin that cannot run as
     written (a joint the model lacks, no transmission, a bad number) is left out with a
     warning naming it and the cause, and whatever it opened is closed: Gazebo loads the
@@ -76,6 +76,12 @@ def _build(context: PluginContext, what: str, make: Callable[[PluginContext], Pl
         tracking.close_all()
         context.bus.warn(f"model '{context.model_name}': {what} not loaded: {error}; the "
                          "model is spawned without it")
+        return
+    unread = spec.unread()
+    if unread:  # e.g. <torque> where Noetic's plugin reads <wheelTorque>
+        context.bus.warn(f"model '{context.model_name}': {what} does not read "
+                         f"{', '.join(f'<{tag}>' for tag in unread)} (not a parameter of "
+                         "the gazebo_ros plugin sim_bridge emulates); ignored")
 
 
 def create_plugins(context: PluginContext, tags: GazeboTags) -> List[Plugin]:
@@ -97,7 +103,7 @@ def _create_plugins(context: PluginContext, tags: GazeboTags, plugins: List[Plug
             context.bus.warn(f"model '{context.model_name}': plugin '{spec.name}' "
                              f"({spec.filename}) is not emulated by sim_bridge; ignored")
             continue
-        _build(context, f"plugin '{spec.name}' ({spec.filename})",
+        _build(context, spec, f"plugin '{spec.name}' ({spec.filename})",
                lambda tracked, cls=plugin_class, spec=spec: cls(tracked, spec), plugins)
     for sensor in tags.sensors:
         if not sensor.plugins and sensor.link in read_links:
@@ -113,7 +119,8 @@ def _create_plugins(context: PluginContext, tags: GazeboTags, plugins: List[Plug
                                  f"'{sensor.type}' with plugin {spec.filename} is not emulated "
                                  "by sim_bridge; ignored")
                 continue
-            _build(context, f"sensor '{sensor.name}' plugin '{spec.name}' ({spec.filename})",
+            _build(context, spec,
+                   f"sensor '{sensor.name}' plugin '{spec.name}' ({spec.filename})",
                    lambda tracked, cls=entry[0], spec=spec, sensor=sensor:
                    cls(tracked, spec, sensor), plugins)
 
