@@ -496,29 +496,26 @@ class SimBridgeNode:
     def _publish_clock(self) -> None:
         self.clock.publish(Clock(clock=rospy.Time(nsecs=self.world.now_ns)))
 
-    def _publish_model_states(self) -> None:
-        message = ModelStates()
-        for name in self.world.models:
-            position, orientation = self.world.pose(name)
-            linear, angular = self.world.twist(name)
+    @staticmethod
+    def _states_message(message_class, entries):
+        """A ModelStates or LinkStates from (name, position, orientation, linear, angular)."""
+        message = message_class()
+        for name, position, orientation, linear, angular in entries:
             pose, twist = Pose(), Twist()
             _fill_pose(pose, position, orientation)
             _fill_twist(twist, linear, angular)
             message.name.append(name)
             message.pose.append(pose)
             message.twist.append(twist)
-        self.model_states.publish(message)
+        return message
+
+    def _publish_model_states(self) -> None:
+        self.model_states.publish(self._states_message(
+            ModelStates, ((name, *self.world.pose(name), *self.world.twist(name))
+                          for name in self.world.models)))
 
     def _publish_link_states(self) -> None:
-        message = LinkStates()
-        for name, position, orientation, linear, angular in self.world.link_states():
-            pose, twist = Pose(), Twist()
-            _fill_pose(pose, position, orientation)
-            _fill_twist(twist, linear, angular)
-            message.name.append(name)
-            message.pose.append(pose)
-            message.twist.append(twist)
-        self.link_states.publish(message)
+        self.link_states.publish(self._states_message(LinkStates, self.world.link_states()))
 
     def _pace(self) -> None:
         """Sleeps so that simulated time runs at real_time_factor times the wall clock."""

@@ -154,6 +154,18 @@ def _finite(values: Sequence[float], what: str) -> None:
         raise SimError(f"{what} {tuple(values)} is not finite")
 
 
+def _checked_state(position: Sequence[float], orientation: Sequence[float],
+                   linear: Sequence[float], angular: Sequence[float]) -> Quat:
+    """The orientation normalised, once every number of a requested state is checked."""
+    _finite(position, "the position")
+    _finite(linear, "the linear velocity")
+    _finite(angular, "the angular velocity")
+    try:
+        return normalized(orientation)
+    except ValueError as error:
+        raise SimError(f"the orientation: {error}") from None
+
+
 def _compose(outer: Transform, inner: Transform) -> Transform:
     return pb.multiplyTransforms(outer[0], outer[1], inner[0], inner[1])
 
@@ -569,13 +581,7 @@ class World:
     def set_state(self, name: str, position: Sequence[float], orientation: Sequence[float],
                   linear: Sequence[float] = (0, 0, 0), angular: Sequence[float] = (0, 0, 0)) -> None:
         model = self.model(name)
-        _finite(position, "the position")
-        _finite(linear, "the linear velocity")
-        _finite(angular, "the angular velocity")
-        try:
-            orientation = normalized(orientation)
-        except ValueError as error:
-            raise SimError(f"the orientation: {error}") from None
+        orientation = _checked_state(position, orientation, linear, angular)
         if model.kind == "static":
             model.position, model.orientation = tuple(position), orientation
             roll_pitch_yaw = pb.getEulerFromQuaternion(list(orientation))
@@ -730,13 +736,7 @@ class World:
             raise SimError(f"link '{ref.scoped}' is not the canonical link of model "
                            f"'{model.name}', '{model.name}::{canonical}', the only one "
                            "set_link_state places (the model moves with it)")
-        _finite(position, "the position")
-        _finite(linear, "the linear velocity")
-        _finite(angular, "the angular velocity")
-        try:
-            orientation = normalized(orientation)
-        except ValueError as error:
-            raise SimError(f"the orientation: {error}") from None
+        orientation = _checked_state(position, orientation, linear, angular)
         link_in_model = _compose(_inverse(self.pose(model.name)), self.link_pose(ref))
         model_position, model_orientation = _compose((tuple(position), orientation),
                                                      _inverse(link_in_model))

@@ -27,37 +27,34 @@ def command(bus, linear, angular):
     bus.subscriptions["/cmd_vel"](twist)
 
 
-def settle(world, seconds=1.0):
-    run(world, seconds)
-
-
 def test_it_drives_a_metre_at_0_2_m_s_for_5_s(burger, bus):
     (x0, y0, _), _ = burger.pose("burger")
     command(bus, 0.2, 0.0)
     run(burger, 5.0)
     command(bus, 0.0, 0.0)
-    settle(burger)
+    run(burger, 1.0)  # comes to rest
     (x1, y1, _), _ = burger.pose("burger")
     assert math.hypot(x1 - x0, y1 - y0) == pytest.approx(1.0, rel=0.02)
     assert abs(y1 - y0) < 0.02
 
 
+def turn_for(world, seconds, last_yaw):
+    """(angle turned, final yaw), summed every 0.1 s of simulated time."""
+    turned = 0.0
+    for _ in range(int(round(seconds / 0.1))):
+        run(world, 0.1)
+        yaw = yaw_from_quaternion(world.pose("burger")[1])
+        turned += math.atan2(math.sin(yaw - last_yaw), math.cos(yaw - last_yaw))
+        last_yaw = yaw
+    return turned, last_yaw
+
+
 def test_it_turns_2_rad_at_0_5_rad_s_for_4_s(burger, bus):
-    yaw0 = yaw_from_quaternion(burger.pose("burger")[1])
-    turned, last = 0.0, yaw0
     command(bus, 0.0, 0.5)
-    for _ in range(40):
-        run(burger, 0.1)
-        yaw = yaw_from_quaternion(burger.pose("burger")[1])
-        turned += math.atan2(math.sin(yaw - last), math.cos(yaw - last))
-        last = yaw
+    turning, yaw = turn_for(burger, 4.0, yaw_from_quaternion(burger.pose("burger")[1]))
     command(bus, 0.0, 0.0)
-    for _ in range(10):
-        run(burger, 0.1)
-        yaw = yaw_from_quaternion(burger.pose("burger")[1])
-        turned += math.atan2(math.sin(yaw - last), math.cos(yaw - last))
-        last = yaw
-    assert turned == pytest.approx(2.0, rel=0.03)
+    coasting, _ = turn_for(burger, 1.0, yaw)
+    assert turning + coasting == pytest.approx(2.0, rel=0.03)
 
 
 def test_its_laser_and_imu_publish(burger, bus):
