@@ -29,14 +29,23 @@ pybullet differs from Gazebo in ways that matter here, and this module hides the
   acceleration the casters take it all and the wheels slip. Frictionless sphere casters
   (mu1 = mu2 = 0) are therefore made 1 mm smaller: the robot stands on its wheels and one
   caster, as a real one does on a floor that is not perfectly flat;
-- ``package://`` mesh URIs are resolved to files (pybullet knows no ROS packages);
+- ``package://`` and ``file://`` mesh URIs and relative paths are resolved to files
+  (pybullet knows no ROS packages, and loads the URDF from a temporary file), and every
+  mesh goes through :mod:`sim_bridge.mesh_files`: Collada and ASCII STL, which pybullet
+  cannot read, are converted to OBJ (Collada's unit applied, as Gazebo does). A mesh that
+  cannot be read does not refuse the robot, as in Gazebo: a visual is left out, and a
+  collision falls back to the link's other collision shapes, else to the bounding box of
+  the link's readable visual meshes, else it is dropped and the link keeps its inertial;
+  each with one warning naming the link, the file and what was done;
 - a root link named ``world`` fixes the robot to the world, as in Gazebo.
 """
 from __future__ import annotations
 
+import functools
 import os
 import tempfile
 import xml.etree.ElementTree as ET
+from dataclasses import dataclass
 from typing import Dict, List, Mapping, Optional, Sequence, Tuple
 
 import numpy as np
@@ -44,6 +53,7 @@ import pybullet as pb
 
 from sim_bridge.gazebo_tags import GazeboTags
 from sim_bridge.materials import gazebo_colour
+from sim_bridge.mesh_files import MeshError, bounds, loadable_file
 from urdf_tools.kinematics import rpy_matrix
 from urdf_tools.model import RobotModel, UrdfError
 
@@ -71,10 +81,134 @@ def resolve_package_uri(uri: str, source: str) -> str:
     package, _, rest = uri[len("package://"):].partition("/")
     import rospkg  # only descriptions with package:// meshes need a ROS environment
     try:
-        return os.path.join(rospkg.RosPack().get_path(package), rest)
+        return os.path.join(_package_path(package, os.environ.get("ROS_PACKAGE_PATH", "")),
+                            rest)
     except rospkg.ResourceNotFound:
         raise UrdfError(f"{source}: mesh '{uri}': ROS package '{package}' not found "
                         "(is the workspace sourced?)") from None
+
+
+@functools.lru_cache(maxsize=256)
+def _package_path(package: str, ros_package_path: str) -> str:
+    """A ROS package's folder (rospkg crawls ROS_PACKAGE_PATH for each new RosPack, about
+    12 ms: once per package, not once per mesh). Not found is not remembered."""
+    import rospkg
+    return rospkg.RosPack().get_path(package)
+
+
+def mesh_path(uri: str, source: str) -> str:
+    """The file a URDF mesh ``filename`` names: ``package://``, ``file://``, an absolute
+    path, or a path relative to the URDF file's folder when ``source`` is a file, else to
+    the current folder (gzserver's). Raises MeshError when a package is not found."""
+    try:
+        path = resolve_package_uri(uri, source)
+    except UrdfError:
+        package = uri[len("package://"):].partition("/")[0]
+        raise MeshError(f"names ROS package '{package}', which is not found (is the "
+                        "workspace sourced?)") from None
+    if not path:
+        raise MeshError("is empty (the <mesh> has no filename)")
+    if not os.path.isabs(path):
+        base = os.path.dirname(os.path.abspath(source)) if os.path.isfile(source) \
+            else os.getcwd()
+        path = os.path.join(base, path)
+    return path
+
+
+@dataclass
+class _ReadableMesh:
+    """A visual mesh of a link that pybullet will load."""
+
+    uri: str
+    path: str
+    origin: Optional[ET.Element]
+    scale: np.ndarray
+
+
+def _mesh_scale(mesh: ET.Element) -> np.ndarray:
+    try:
+        scale = _vector(mesh.get("scale") or "1 1 1")
+    except ValueError:
+        scale = np.ones(3)
+    return scale if scale.shape == (3,) else np.ones(3)
+
+
+def _loadable(mesh: ET.Element, source: str) -> Tuple[str, str]:
+    """(URI as written, the file pybullet loads) of a <mesh>; MeshError when unreadable."""
+    uri = mesh.get("filename", "")
+    path = mesh_path(uri, source)
+    try:
+        return uri, loadable_file(path)
+    except MeshError as error:
+        where = f" ({path})" if path != uri else ""
+        raise MeshError(f"{where} {error}".strip()) from None
+
+
+def _bounding_box(link: ET.Element, visual: _ReadableMesh) -> Tuple[ET.Element, np.ndarray]:
+    """A <collision> box the size of ``visual``'s mesh, where the visual is."""
+    lower, upper = bounds(visual.path)
+    size = np.abs((upper - lower) * visual.scale)
+    centre = (upper + lower) / 2 * visual.scale
+    xyz = _vector(visual.origin.get("xyz") if visual.origin is not None else None)
+    rpy = _vector(visual.origin.get("rpy") if visual.origin is not None else None)
+    xyz = xyz + rpy_matrix(*rpy) @ centre
+    collision = ET.SubElement(link, "collision")
+    ET.SubElement(collision, "origin", xyz=" ".join(repr(float(v)) for v in xyz),
+                  rpy=" ".join(repr(float(v)) for v in rpy))
+    geometry = ET.SubElement(collision, "geometry")
+    ET.SubElement(geometry, "box", size=" ".join(repr(float(max(v, 1e-6))) for v in size))
+    return collision, size
+
+
+def prepare_meshes(link: ET.Element, source: str, warn) -> None:
+    """Points every <mesh> of ``link`` at a file pybullet reads (see the module's notes);
+    leaves out visuals and replaces collisions whose mesh cannot be read, one warning each."""
+    name = link.get("name", "")
+    visuals: List[_ReadableMesh] = []
+    for visual in link.findall("visual"):
+        mesh = visual.find("geometry/mesh")
+        if mesh is None:
+            continue
+        try:
+            uri, path = _loadable(mesh, source)
+        except MeshError as error:
+            link.remove(visual)
+            warn(f"{source}: link '{name}': visual mesh '{mesh.get('filename', '')}' "
+                 f"{error}; the visual is left out, the robot is spawned without it")
+            continue
+        mesh.set("filename", path)
+        visuals.append(_ReadableMesh(uri, path, visual.find("origin"), _mesh_scale(mesh)))
+    failed: List[Tuple[str, MeshError]] = []
+    for collision in link.findall("collision"):
+        mesh = collision.find("geometry/mesh")
+        if mesh is None:
+            continue
+        try:
+            mesh.set("filename", _loadable(mesh, source)[1])
+        except MeshError as error:
+            link.remove(collision)
+            failed.append((mesh.get("filename", ""), error))
+    if not failed:
+        return
+    remaining = len(link.findall("collision"))
+    boxes: List[str] = []
+    if remaining:
+        done = (f"the link keeps its {remaining} other collision shape"
+                f"{'s' if remaining > 1 else ''}")
+    elif visuals:
+        for visual in visuals:
+            try:
+                size = _bounding_box(link, visual)[1]
+            except MeshError:
+                continue
+            boxes.append(f"'{visual.uri}' ({' x '.join(f'{v:.3g}' for v in size)} m)")
+        done = ("it is replaced by the bounding box of the link's visual mesh "
+                + ", ".join(boxes))
+    if not remaining and not boxes:
+        done = ("the link has no other collision shape and no readable visual mesh: it "
+                "has no collision shape (it keeps its inertial)")
+    for uri, error in failed:
+        warn(f"{source}: link '{name}': collision mesh '{uri}' {error}; {done}")
 
 
 def _is_caster(tags: GazeboTags, link: str) -> bool:
@@ -141,15 +275,7 @@ def prepare_urdf(xml: str, model: RobotModel, tags: GazeboTags, warn) -> str:
             ET.SubElement(inertial, "mass", value=str(NEGLIGIBLE_MASS))
             ET.SubElement(inertial, "inertia", ixx=str(NEGLIGIBLE_INERTIA), ixy="0", ixz="0",
                           iyy=str(NEGLIGIBLE_INERTIA), iyz="0", izz=str(NEGLIGIBLE_INERTIA))
-        for mesh in link.iter("mesh"):
-            path = resolve_package_uri(mesh.get("filename", ""), model.source)
-            if path.lower().endswith(".dae"):
-                warn(f"{model.source}: link '{link.get('name')}' mesh '{path}': pybullet "
-                     "cannot read COLLADA (.dae); use OBJ or STL. The shape is left out.")
-            elif not os.path.isfile(path):
-                raise UrdfError(f"{model.source}: link '{link.get('name')}' mesh '{path}' "
-                                "is not a file")
-            mesh.set("filename", path)
+        prepare_meshes(link, model.source, warn)
     # <gazebo> and <transmission> mean nothing to pybullet's importer
     for tag in ("gazebo", "transmission"):
         for element in root.findall(tag):

@@ -5,18 +5,32 @@ A world is ``<physics>`` (step size), ``<gravity>``, ``<include>`` of ``model://
 with ``<static>``, ``<pose>`` and links of box, cylinder, sphere, plane and mesh geometry.
 Lights, scenes, GUI and plugins of the world are accepted and ignored.
 
+Meshes (``model://``, ``file://`` or relative URIs) are read as Gazebo reads them, through
+:mod:`sim_bridge.mesh_files`: OBJ, STL and Collada, the last converted to OBJ for pybullet
+(its ``<unit>`` applied). A mesh that cannot be read does not stop the world, as in Gazebo:
+a visual is left out; a collision falls back to the link's other collision shapes, else to
+the bounding box of the link's readable visual meshes (with the collision's friction), else
+it is dropped and the link keeps its inertial. Each case is one warning naming the model,
+the link, the file and what was done; the same case in several models (a world saved from
+Gazebo's GUI inlines every copy of a model) is one warning that counts them. Warnings go
+to the ``warn`` callable given, by default to the logger ``rosout.sim_bridge``, which is
+the one ``rospy.logwarn(..., logger_name="sim_bridge")`` uses: in the node they reach the
+console and /rosout, without this module importing rospy.
+
 The result is plain data (:class:`WorldSpec`, :class:`ModelSpec`); turning it into
 pybullet bodies is :mod:`sim_bridge.world`'s job. Every error names the file and the
 element, and for an unknown ``model://`` the folders searched.
 """
 from __future__ import annotations
 
+import logging
 import os
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
-from typing import List, Optional, Sequence, Tuple
+from typing import Callable, Dict, List, Optional, Sequence, Tuple
 
 from sim_bridge.materials import gazebo_colour
+from sim_bridge.mesh_files import MeshError, bounds, loadable_file
 from sim_bridge.poses import compose6
 
 Pose6 = Tuple[float, float, float, float, float, float]
@@ -29,6 +43,42 @@ DEFAULT_GRAVITY = (0.0, 0.0, -9.8)
 
 class SdfError(ValueError):
     """A world or model that cannot be loaded; the message names the file and the cause."""
+
+
+Warn = Callable[[str], None]
+_LOG = logging.getLogger("rosout.sim_bridge")
+
+
+def _log_warning(text: str) -> None:
+    _LOG.warning(text)
+
+
+class _UnreadableMesh(Exception):
+    """A <mesh> whose file cannot be read: its URI and why."""
+
+    def __init__(self, uri: str, reason: str):
+        super().__init__(f"{uri}: {reason}")
+        self.uri, self.reason = uri, reason
+
+
+class _Warnings:
+    """Collects the mesh warnings of one load, so that the same case met in several models
+    is said once, with a count."""
+
+    def __init__(self) -> None:
+        self.cases: Dict[tuple, List] = {}
+
+    def add(self, key: tuple, text: str) -> None:
+        case = self.cases.setdefault(key, [text, set()])
+        case[1].add(text)
+
+    def flush(self, warn: Optional[Warn]) -> None:
+        warn = warn or _log_warning
+        for text, texts in self.cases.values():
+            more = len(texts) - 1
+            warn(text + (f" (the same for {more} more link{'s' if more > 1 else ''})"
+                         if more else ""))
+        self.cases.clear()
 
 
 @dataclass
@@ -183,47 +233,86 @@ def _shape(element: ET.Element, what: str, source: str, model_dir: str) -> Shape
                          size=(size[0], size[1], 0.0))
     elif kind == "mesh":
         uri = (shape.findtext("uri") or "").strip()
-        spec = ShapeSpec("mesh", pose, filename=_mesh_path(uri, what, source, model_dir),
-                         scale=_numbers(shape.findtext("scale") or "1 1 1", 3,  # type: ignore[arg-type]
-                                        f"{what} mesh <scale>", source))
+        scale = _numbers(shape.findtext("scale") or "1 1 1", 3, f"{what} mesh <scale>", source)
+        spec = ShapeSpec("mesh", pose, filename=_mesh_file(uri, model_dir),
+                         scale=scale)  # type: ignore[arg-type]
     else:
         raise SdfError(f"{source}: {what} has geometry <{kind}>; sim_bridge reads box, "
                        "cylinder, sphere, plane and mesh")
-    mu = element.find("surface/friction/ode/mu")
-    if mu is not None and mu.text:
-        spec.friction = float(mu.text)
+    spec.friction = _friction(element)
     return spec
 
 
-def _mesh_path(uri: str, what: str, source: str, model_dir: str) -> str:
+def _friction(element: ET.Element) -> Optional[float]:
+    mu = element.find("surface/friction/ode/mu")
+    return float(mu.text) if mu is not None and mu.text else None
+
+
+def _mesh_file(uri: str, model_dir: str) -> str:
+    """The file pybullet loads for a mesh ``<uri>`` (see :mod:`sim_bridge.mesh_files`);
+    _UnreadableMesh when there is none."""
+    if not uri:
+        raise _UnreadableMesh(uri, "is empty (the <mesh> has no <uri>)")
     if uri.startswith("model://"):
         name, _, rest = uri[len("model://"):].partition("/")
-        for folder in model_search_path():
-            candidate = os.path.join(folder, name, rest)
-            if os.path.isfile(candidate):
-                return candidate
-        raise SdfError(f"{source}: {what} mesh '{uri}' not found in {model_search_path()}")
-    path = uri[len("file://"):] if uri.startswith("file://") else uri
-    if not os.path.isabs(path):
-        path = os.path.join(model_dir, path)
-    if not os.path.isfile(path):
-        raise SdfError(f"{source}: {what} mesh '{uri}' is not a file")
-    if not path.lower().endswith((".obj", ".stl")):
-        raise SdfError(f"{source}: {what} mesh '{uri}': sim_bridge reads OBJ and STL meshes")
-    return path
+        folders = model_search_path()
+        candidates = [os.path.join(folder, name, rest) for folder in folders]
+        found = [c for c in candidates if os.path.exists(c)]
+        if not found:
+            raise _UnreadableMesh(uri, f"is not found (searched {', '.join(candidates)}; "
+                                  "GAZEBO_MODEL_PATH, then sim_bridge's models/)")
+        path = found[0]
+    else:
+        path = uri[len("file://"):] if uri.startswith("file://") else uri
+        if not os.path.isabs(path):
+            path = os.path.join(model_dir, path)
+    try:
+        return loadable_file(path)
+    except MeshError as error:
+        raise _UnreadableMesh(uri, f"{'(' + path + ') ' if path != uri else ''}{error}") \
+            from None
 
 
-def _link(element: ET.Element, model: str, source: str, model_dir: str) -> LinkSpec:
+def _bounding_box(visual: ShapeSpec, friction: Optional[float]) -> ShapeSpec:
+    """A collision box the size of a visual mesh, where the visual is."""
+    lower, upper = bounds(visual.filename)
+    scale = [float(v) for v in visual.scale]
+    size = tuple(max(abs((hi - lo) * k), 1e-6) for lo, hi, k in zip(lower, upper, scale))
+    centre = tuple(float((hi + lo) / 2 * k) for lo, hi, k in zip(lower, upper, scale))
+    return ShapeSpec("box", compose6(visual.pose, (*centre, 0.0, 0.0, 0.0)),
+                     size=size, friction=friction)  # type: ignore[arg-type]
+
+
+def _link(element: ET.Element, model: str, source: str, model_dir: str,
+          warnings: _Warnings) -> LinkSpec:
     name = element.get("name", "link")
     what = f"model '{model}' link '{name}'"
     link = LinkSpec(name, _pose(element, what, source))
-    for index, collision in enumerate(element.findall("collision")):
-        link.collisions.append(_shape(collision, f"{what} collision {collision.get('name', index)}",
-                                      source, model_dir))
+    visual_meshes: List[Tuple[str, ShapeSpec]] = []
     for index, visual in enumerate(element.findall("visual")):
-        shape = _shape(visual, f"{what} visual {visual.get('name', index)}", source, model_dir)
+        label = f"{what} visual '{visual.get('name', index)}'"
+        try:
+            shape = _shape(visual, label, source, model_dir)
+        except _UnreadableMesh as mesh:
+            warnings.add(("visual", mesh.uri, mesh.reason),
+                         f"{source}: {label}: mesh '{mesh.uri}' {mesh.reason}; the visual "
+                         "is left out, the model is loaded without it")
+            continue
         shape.rgba = _material(visual)
         link.visuals.append(shape)
+        if shape.kind == "mesh":
+            visual_meshes.append(((visual.findtext("geometry/mesh/uri") or "").strip(), shape))
+    failed: List[Tuple[str, _UnreadableMesh]] = []
+    friction: Optional[float] = None
+    for index, collision in enumerate(element.findall("collision")):
+        label = f"{what} collision '{collision.get('name', index)}'"
+        try:
+            link.collisions.append(_shape(collision, label, source, model_dir))
+        except _UnreadableMesh as mesh:
+            failed.append((label, mesh))
+            friction = friction if friction is not None else _friction(collision)
+    if failed:
+        _replace_collisions(link, failed, visual_meshes, friction, source, warnings)
     inertial = element.find("inertial")
     if inertial is not None:
         link.mass = _child_number(inertial, "mass", 1.0, f"{what} inertial", source)
@@ -235,16 +324,43 @@ def _link(element: ET.Element, model: str, source: str, model_dir: str) -> LinkS
     return link
 
 
-def _model(element: ET.Element, source: str, model_dir: str) -> ModelSpec:
+def _replace_collisions(link: LinkSpec, failed: List[Tuple[str, _UnreadableMesh]],
+                        visual_meshes: List[Tuple[str, ShapeSpec]], friction: Optional[float],
+                        source: str, warnings: _Warnings) -> None:
+    """What stands in for collision meshes that cannot be read (see the module's notes)."""
+    remaining = len(link.collisions)
+    boxes: List[str] = []
+    if remaining:
+        done = (f"the link keeps its {remaining} other collision shape"
+                f"{'s' if remaining > 1 else ''}")
+    else:
+        for uri, visual in visual_meshes:
+            try:
+                box = _bounding_box(visual, friction)
+            except MeshError:
+                continue
+            link.collisions.append(box)
+            boxes.append(f"'{uri}' ({' x '.join(f'{v:.3g}' for v in box.size)} m)")
+        done = ("it is replaced by the bounding box of the link's visual mesh "
+                + ", ".join(boxes))
+    if not remaining and not boxes:
+        done = ("the link has no other collision shape and no readable visual mesh: it "
+                "has no collision shape (it keeps its inertial)")
+    for label, mesh in failed:
+        warnings.add(("collision", mesh.uri, mesh.reason, done),
+                     f"{source}: {label}: mesh '{mesh.uri}' {mesh.reason}; {done}")
+
+
+def _model(element: ET.Element, source: str, model_dir: str, warnings: _Warnings) -> ModelSpec:
     name = element.get("name")
     if not name:
         raise SdfError(f"{source}: a <model> has no name")
     static = (element.findtext("static") or "false").strip().lower() in ("1", "true")
     model = ModelSpec(name, static, _pose(element, f"model '{name}'", source), source=source)
     for link in element.findall("link"):
-        model.links.append(_link(link, name, source, model_dir))
+        model.links.append(_link(link, name, source, model_dir, warnings))
     for nested in element.findall("include"):
-        inner = _include(nested, source)
+        inner = _include(nested, source, warnings)
         if inner is not None:
             model.links.extend(_offset_links(inner))
     if element.find("joint") is not None and not static:
@@ -258,19 +374,35 @@ def _offset_links(model: ModelSpec) -> List[LinkSpec]:
                      l.inertia, l.inertial_pose) for l in model.links]
 
 
-def load_model_file(path: str) -> Optional[ModelSpec]:
-    """The first model of an SDF file (a model.sdf); None for a light (model://sun)."""
+def load_model_file(path: str, warn: Optional[Warn] = None) -> Optional[ModelSpec]:
+    """The first model of an SDF file (a model.sdf); None for a light (model://sun).
+    Meshes that cannot be read are warned about through ``warn`` (see the module's notes)."""
+    warnings = _Warnings()
+    model = _load_model_file(path, warnings)
+    warnings.flush(warn)
+    return model
+
+
+def _load_model_file(path: str, warnings: _Warnings) -> Optional[ModelSpec]:
     root = _parse(path)
     element = root if root.tag == "model" else root.find("model")
     if element is None:
         if root.find("light") is not None or root.tag == "light":
             return None
         raise SdfError(f"{path}: no <model> in it")
-    return _model(element, path, os.path.dirname(path))
+    return _model(element, path, os.path.dirname(path), warnings)
 
 
-def parse_model(text: str, source: str = "<sdf>") -> ModelSpec:
-    """A model from SDF text (spawn_sdf_model's model_xml)."""
+def parse_model(text: str, source: str = "<sdf>", warn: Optional[Warn] = None) -> ModelSpec:
+    """A model from SDF text (spawn_sdf_model's model_xml). Meshes that cannot be read are
+    warned about through ``warn`` (see the module's notes)."""
+    warnings = _Warnings()
+    model = _parse_model(text, source, warnings)
+    warnings.flush(warn)
+    return model
+
+
+def _parse_model(text: str, source: str, warnings: _Warnings) -> ModelSpec:
     try:
         root = ET.fromstring(text)
     except ET.ParseError as error:
@@ -279,18 +411,18 @@ def parse_model(text: str, source: str = "<sdf>") -> ModelSpec:
     if element is None:
         # spawn_model -database NAME sends a world that includes model://NAME
         include = root.find(".//include")
-        model = _include(include, source) if include is not None else None
+        model = _include(include, source, warnings) if include is not None else None
         if model is None:
             raise SdfError(f"{source}: no <model> in it")
         return model
-    return _model(element, source, os.getcwd())
+    return _model(element, source, os.getcwd(), warnings)
 
 
-def _include(element: ET.Element, source: str) -> Optional[ModelSpec]:
+def _include(element: ET.Element, source: str, warnings: _Warnings) -> Optional[ModelSpec]:
     uri = (element.findtext("uri") or "").strip()
     if not uri:
         raise SdfError(f"{source}: an <include> has no <uri>")
-    model = load_model_file(resolve_model_uri(uri, source))
+    model = _load_model_file(resolve_model_uri(uri, source), warnings)
     if model is None:
         return None
     if element.find("name") is not None:
@@ -326,8 +458,17 @@ def resolve_world_name(name: str) -> str:
                    f"({os.pathsep.join(folders) or 'unset'})")
 
 
-def load_world(path: str) -> WorldSpec:
-    """Reads a .world file (``path`` as :func:`resolve_world_name` resolves it)."""
+def load_world(path: str, warn: Optional[Warn] = None) -> WorldSpec:
+    """Reads a .world file (``path`` as :func:`resolve_world_name` resolves it). Meshes that
+    cannot be read are warned about through ``warn`` (see the module's notes)."""
+    warnings = _Warnings()
+    try:
+        return _load_world(path, warnings)
+    finally:
+        warnings.flush(warn)
+
+
+def _load_world(path: str, warnings: _Warnings) -> WorldSpec:
     path = resolve_world_name(path)
     root = _parse(path)
     world = root.find("world") if root.tag == "sdf" else root
@@ -345,9 +486,9 @@ def load_world(path: str) -> WorldSpec:
     names = set()
     for element in world:
         if element.tag == "include":
-            model = _include(element, path)
+            model = _include(element, path, warnings)
         elif element.tag == "model":
-            model = _model(element, path, os.path.dirname(path))
+            model = _model(element, path, os.path.dirname(path), warnings)
         else:
             continue
         if model is None:  # a light: accepted, ignored
