@@ -48,9 +48,9 @@ class Tally:
         self.failures += other.failures
 
 
-# Where packages live: the top level (the course solutions, the simulator) and compat/ (the
-# Gazebo stack's names).
-PACKAGE_DIRS = ("*", os.path.join("compat", "*"))
+# Where packages live: the top level (the course solutions, the simulator), compat/ (the
+# Gazebo stack's names) and courses/ (course environments).
+PACKAGE_DIRS = ("*", os.path.join("compat", "*"), os.path.join("courses", "*"))
 
 
 def packages() -> List[str]:

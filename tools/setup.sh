@@ -100,7 +100,7 @@ export PATH="/usr/bin:/bin:$PATH"
 log="$ws/catkin_make.log"
 if (cd "$ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON \
       >"$log" 2>&1); then
-  echo "setup: catkin build: ok ($(ls -d "$repo"/*/package.xml "$repo"/compat/*/package.xml | wc -l) packages; log $log)"
+  echo "setup: catkin build: ok ($(ls -d "$repo"/*/package.xml "$repo"/compat/*/package.xml "$repo"/courses/*/package.xml | wc -l) packages; log $log)"
 else
   tail -n 40 "$log" >&2
   echo "setup: catkin build failed; the whole log is $log" >&2
