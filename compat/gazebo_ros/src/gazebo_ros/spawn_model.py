@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import argparse
 import re
+import signal
 import sys
 import time
 from typing import List, Optional
@@ -171,28 +172,43 @@ def spawn(args: argparse.Namespace) -> None:
         rospy.ServiceProxy(f"{namespace}/unpause_physics", Empty)()
 
 
+class Stop(Exception):
+    """SIGINT or SIGTERM while spawn_model -b stays."""
+
+
+def _stop(_signal_number, _frame):
+    raise Stop()
+
+
+def stay_then_delete(args: argparse.Namespace) -> None:
+    """-b: stay until Ctrl-C (or SIGTERM, as roslaunch sends), then delete the model. rospy's
+    own signal handling is off for -b, so that the node is still up to make that call: a
+    call from rospy's shutdown hook, inside the signal handler, could wait on a lock the
+    interrupted main thread held, and hung now and then."""
+    signal.signal(signal.SIGINT, _stop)
+    signal.signal(signal.SIGTERM, _stop)
+    try:
+        while not rospy.is_shutdown():
+            time.sleep(POLL_PERIOD)
+    except Stop:
+        pass
+    try:
+        rospy.ServiceProxy(f"{args.gazebo_namespace.rstrip('/')}/delete_model",
+                           DeleteModel)(args.model)
+    except (rospy.ServiceException, rospy.ROSException) as error:
+        print(f"spawn_model: could not delete '{args.model}': {error}", file=sys.stderr)
+    rospy.signal_shutdown("spawn_model -b: stopped, model deleted")
+
+
 def main(argv: Optional[List[str]] = None) -> int:
     arguments = rospy.myargv(argv if argv is not None else sys.argv)[1:]
     args = parse_arguments(arguments)
-    rospy.init_node("spawn_model", anonymous=True)
+    rospy.init_node("spawn_model", anonymous=True, disable_signals=args.b)
     try:
         spawn(args)
     except (SpawnError, rospy.ServiceException) as error:
         print(f"spawn_model: {error}", file=sys.stderr)
         return 1
     if args.b:
-        # as upstream: the model goes when this node is shut down (a service call still
-        # works in a shutdown hook, not after rospy.spin() has returned)
-        delete = rospy.ServiceProxy(f"{args.gazebo_namespace.rstrip('/')}/delete_model",
-                                    DeleteModel)
-
-        def delete_model():
-            try:
-                delete(args.model)
-            except (rospy.ServiceException, rospy.ROSException) as error:
-                print(f"spawn_model: could not delete '{args.model}': {error}",
-                      file=sys.stderr)
-
-        rospy.on_shutdown(delete_model)
-        rospy.spin()
+        stay_then_delete(args)
     return 0

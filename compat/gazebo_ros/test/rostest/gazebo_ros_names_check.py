@@ -78,19 +78,27 @@ class GazeboRosNames(unittest.TestCase):
         self.assertIn("bot", result.stderr)
 
     def test_6_bond_deletes_the_model_when_spawn_model_stops(self):
-        bonded = subprocess.Popen(["rosrun", "gazebo_ros", "spawn_model", "-urdf", "-param",
-                                   "robot_description", "-model", "bonded", "-x", "-2", "-b"],
-                                  stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                                  start_new_session=True)
+        log_path = os.path.join(os.environ.get("ROS_HOME", "/tmp"), "bonded.log")
+        with open(log_path, "w", encoding="utf-8") as log:
+            bonded = subprocess.Popen(["rosrun", "gazebo_ros", "spawn_model", "-urdf", "-param",
+                                       "robot_description", "-model", "bonded", "-x", "-2",
+                                       "-b"], stdout=log, stderr=subprocess.STDOUT,
+                                      start_new_session=True)
+
+        def said():
+            with open(log_path, encoding="utf-8") as stream:
+                return stream.read()
+
         try:
-            self.sim.wait_for_model("bonded")
+            # Ctrl-C once it has spawned and stays (as a user presses it)
+            wait_until(lambda: "Successfully spawned" in said(), "spawn_model to spawn")
             os.killpg(bonded.pid, signal.SIGINT)
             bonded.wait(timeout=30)
         finally:
             if bonded.poll() is None:
                 os.killpg(bonded.pid, signal.SIGKILL)
         wait_until(lambda: "bonded" not in self.sim.properties().model_names,
-                   "the bonded model to be deleted")
+                   f"the bonded model to be deleted (spawn_model said: {said()!r})")
 
 
 if __name__ == "__main__":
