@@ -186,6 +186,13 @@ def pixels_near(path: str, colour: str, fuzz: str = "15%") -> int:
     return int(result.stdout.strip())
 
 
+def uniform(path: str) -> bool:
+    """True when every pixel of the picture has the same colour."""
+    result = subprocess.run(["convert", path, "-format", "%[fx:standard_deviation]", "info:"],
+                            capture_output=True, text=True, check=True)
+    return float(result.stdout.strip()) == 0.0
+
+
 def stable_screenshot(display: str, path: str, window_title: str, launch: Launch,
                       timeout: float = 90.0, settle: int = 3) -> str:
     """Waits for a window titled ``window_title`` (while ``launch`` keeps running), then
@@ -206,9 +213,12 @@ def stable_screenshot(display: str, path: str, window_title: str, launch: Launch
         if not launch.running():
             raise RuntimeError(f"roslaunch exited early; see {launch.log_path}")
         screenshot(display, path)
-        # rviz's status bar shows a frame rate that changes when rendering is slow
+        # rviz's status bar shows a frame rate that changes when rendering is slow; a screen
+        # of one colour is a window that has not drawn its first frame yet (software GL on a
+        # busy machine), not a settled picture
         same = same + 1 if differing_pixels(previous, path, fuzz="0%",
-                                            ignore_bottom=STATUS_BAR_ROWS) == 0 else 0
+                                            ignore_bottom=STATUS_BAR_ROWS) == 0 \
+            and not uniform(path) else 0
         shutil.copyfile(path, previous)
         return same >= settle
 
