@@ -58,3 +58,15 @@ def test_parameters_a_plugin_does_not_read_are_named_once(world, bus):
     (warning,) = [w for w in bus.warnings if "does not read" in w]
     assert "plugin 'truth'" in warning and "<torque>, <maxVelocity>" in warning
     assert "alwaysOn" not in warning  # every gazebo_ros plugin takes it
+
+
+def test_gazebo_ros_controls_own_parameters_are_read(world, bus, diff_bot_xml):
+    written = '<plugin filename="libgazebo_ros_control.so" name="gazebo_ros_control"/>'
+    xml = diff_bot_xml(drive="ros_control")
+    assert written in xml
+    xml = xml.replace(written, written[:-2] + "><legacyModeNS>true</legacyModeNS>"
+                      "<robotParam>robot_description</robotParam><robotSimType>"
+                      "gazebo_ros_control/DefaultRobotHWSim</robotSimType></plugin>")
+    world.spawn_urdf("r", xml, (0, 0, 0))
+    assert "r" in world.models
+    assert not [w for w in bus.warnings if "does not read" in w or "robotSimType" in w]

@@ -2,8 +2,9 @@
 
 Plugin parameters as gazebo_ros_control's: ``robotNamespace`` (where the controller manager
 and the controllers live), ``controlPeriod`` (seconds; default the physics step),
-``robotParam`` and ``robotSimType`` (accepted; the spawned model's own description and
-DefaultRobotHWSim's behaviour are used).
+``robotParam`` and ``legacyModeNS`` (accepted; the spawned model's own description is used),
+``robotSimType`` (DefaultRobotHWSim's behaviour; another class is named in a warning),
+``eStopTopic`` (named in a warning: the emergency stop is not emulated).
 
 Joints are the ones with a ``<transmission>`` (see :mod:`.hardware`). Controllers are
 configured on the parameter server, under ``<namespace>/<name>`` with a ``type``, and loaded,
@@ -70,6 +71,10 @@ class ControllerIO:
         return f"{prefix}/{name.lstrip('/')}" if prefix else name.lstrip("/")
 
 
+# gazebo_ros_control's own RobotHWSim, the one every robot file names
+DEFAULT_SIM_TYPE = "gazebo_ros_control/DefaultRobotHWSim"
+
+
 @dataclass
 class Loaded:
     controller: object
@@ -86,6 +91,15 @@ class RosControl(Plugin):
                               f"'{context.model_name}' has no <transmission>, so no joint to "
                               "control")
         self.hardware = RobotHardware(context, transmissions)
+        self.param("robotParam")  # the spawned model's own description is used
+        self.flag("legacyModeNS", False)  # how upstream finds robotParam: no effect here
+        sim_type = self.param("robotSimType", DEFAULT_SIM_TYPE)
+        if sim_type.strip() != DEFAULT_SIM_TYPE:
+            context.bus.warn(f"plugin '{spec.name}': robotSimType '{sim_type}' is not emulated; "
+                             f"{DEFAULT_SIM_TYPE}'s behaviour is used")
+        if self.param("eStopTopic"):
+            context.bus.warn(f"plugin '{spec.name}': eStopTopic '{self.param('eStopTopic')}' "
+                             "is not emulated: nothing stops the controllers on it")
         period = self.number("controlPeriod", context.step_size)
         self.rate = Rate(1.0 / period if period > context.step_size else 0.0)
         self.period = max(period, context.step_size)
