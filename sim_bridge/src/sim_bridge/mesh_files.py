@@ -43,7 +43,7 @@ import os
 import struct
 import tempfile
 import xml.etree.ElementTree as ET
-from typing import Tuple
+from typing import List, Tuple
 
 import numpy as np
 
@@ -131,6 +131,18 @@ def collada_unit_and_up_axis(path: str) -> Tuple[float, str]:
 
 
 # --- checks ---------------------------------------------------------------------------
+def collision_fallback(remaining: int, boxes: List[str]) -> str:
+    """What stands in for a link's unreadable collision meshes, said in the warning:
+    ``remaining`` other collision shapes, else the bounding boxes described in ``boxes``."""
+    if remaining:
+        return f"the link keeps its {remaining} other collision shape" \
+               f"{'s' if remaining > 1 else ''}"
+    if boxes:
+        return "it is replaced by the bounding box of the link's visual mesh " + ", ".join(boxes)
+    return ("the link has no other collision shape and no readable visual mesh: it has no "
+            "collision shape (it keeps its inertial)")
+
+
 def _check_file(path: str) -> int:
     """The size of ``path`` when it is a non-empty readable file; MeshError otherwise."""
     if not os.path.exists(path):

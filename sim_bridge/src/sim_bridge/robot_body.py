@@ -53,7 +53,7 @@ import pybullet as pb
 
 from sim_bridge.gazebo_tags import GazeboTags
 from sim_bridge.materials import gazebo_colour
-from sim_bridge.mesh_files import MeshError, bounds, loadable_file
+from sim_bridge.mesh_files import MeshError, bounds, collision_fallback, loadable_file
 from urdf_tools.kinematics import rpy_matrix
 from urdf_tools.model import RobotModel, UrdfError
 
@@ -192,21 +192,14 @@ def prepare_meshes(link: ET.Element, source: str, warn) -> None:
         return
     remaining = len(link.findall("collision"))
     boxes: List[str] = []
-    if remaining:
-        done = (f"the link keeps its {remaining} other collision shape"
-                f"{'s' if remaining > 1 else ''}")
-    elif visuals:
+    if not remaining:
         for visual in visuals:
             try:
                 size = _bounding_box(link, visual)[1]
             except MeshError:
                 continue
             boxes.append(f"'{visual.uri}' ({' x '.join(f'{v:.3g}' for v in size)} m)")
-        done = ("it is replaced by the bounding box of the link's visual mesh "
-                + ", ".join(boxes))
-    if not remaining and not boxes:
-        done = ("the link has no other collision shape and no readable visual mesh: it "
-                "has no collision shape (it keeps its inertial)")
+    done = collision_fallback(remaining, boxes)
     for uri, error in failed:
         warn(f"{source}: link '{name}': collision mesh '{uri}' {error}; {done}")
 

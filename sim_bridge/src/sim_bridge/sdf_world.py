@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 from typing import Callable, Dict, List, Optional, Sequence, Tuple
 
 from sim_bridge.materials import gazebo_colour
-from sim_bridge.mesh_files import MeshError, bounds, loadable_file
+from sim_bridge.mesh_files import MeshError, bounds, collision_fallback, loadable_file
 from sim_bridge.poses import compose6
 
 Pose6 = Tuple[float, float, float, float, float, float]
@@ -330,10 +330,7 @@ def _replace_collisions(link: LinkSpec, failed: List[Tuple[str, _UnreadableMesh]
     """What stands in for collision meshes that cannot be read (see the module's notes)."""
     remaining = len(link.collisions)
     boxes: List[str] = []
-    if remaining:
-        done = (f"the link keeps its {remaining} other collision shape"
-                f"{'s' if remaining > 1 else ''}")
-    else:
+    if not remaining:
         for uri, visual in visual_meshes:
             try:
                 box = _bounding_box(visual, friction)
@@ -341,11 +338,7 @@ def _replace_collisions(link: LinkSpec, failed: List[Tuple[str, _UnreadableMesh]
                 continue
             link.collisions.append(box)
             boxes.append(f"'{uri}' ({' x '.join(f'{v:.3g}' for v in box.size)} m)")
-        done = ("it is replaced by the bounding box of the link's visual mesh "
-                + ", ".join(boxes))
-    if not remaining and not boxes:
-        done = ("the link has no other collision shape and no readable visual mesh: it "
-                "has no collision shape (it keeps its inertial)")
+    done = collision_fallback(remaining, boxes)
     for label, mesh in failed:
         warnings.add(("collision", mesh.uri, mesh.reason, done),
                      f"{source}: {label}: mesh '{mesh.uri}' {mesh.reason}; {done}")
