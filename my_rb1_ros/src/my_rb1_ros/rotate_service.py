@@ -9,6 +9,11 @@ Answers: ``success: rotated -90 degrees (final error 0.3 degrees)``, or ``failur
 for: no odometry within ``~odom_timeout``; a robot that does not turn while commanded
 (blocked); a rotation that outlasts its time (scaled to the angle); a request while
 another runs (rejected; the first one goes on); more than ``~max_degrees``.
+
+Every wait is bounded in wall-clock time as well as in simulated time, because simulated
+time can stop (paused physics, a dead simulator) or go back (a reset, a restart): see
+my_rb1_ros.guards. Those, and odometry jumping (a reset's teleport), end the rotation with a
+failure that names them; the node goes on serving.
 """
 from __future__ import annotations
 
@@ -16,13 +21,21 @@ import math
 import threading
 import time
 from dataclasses import dataclass
+from typing import Callable, Optional
 
 import rospy
 from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
+from tf.transformations import euler_from_quaternion
 
+from my_rb1_ros.guards import (ClockWatch, GuardTripped, JumpDetector, MotionLimits,
+                               OdometrySample, OdometryWatch, time_moved_backwards)
 from my_rb1_ros.rotation import RotationGains, YawAccumulator, angular_speed, time_allowed
 from my_rb1_ros.srv import Rotate, RotateResponse
+
+# The longest one wait for simulated time lasts (wall seconds) before the guards look
+# again; each /clock message ends it sooner.
+GUARD_POLL = 0.05
 
 
 @dataclass
@@ -42,6 +55,10 @@ class Config:
     time_slack: float = 2.0
     time_margin: float = 5.0
     max_degrees: int = 3600
+    jump_angular_speed: float = 1.6
+    jump_linear_speed: float = 1.0
+    jump_degrees: float = 5.0
+    jump_distance: float = 0.05
 
     @classmethod
     def from_parameters(cls) -> "Config":
@@ -53,21 +70,46 @@ class Config:
         return RotationGains(self.gain, self.max_angular_speed, self.min_angular_speed,
                              math.radians(self.tolerance_degrees))
 
+    @property
+    def motion_limits(self) -> MotionLimits:
+        return MotionLimits(self.jump_angular_speed, self.jump_linear_speed,
+                            math.radians(self.jump_degrees), self.jump_distance)
+
 
 class RotationFailed(Exception):
     """Why a rotation stopped short; the text goes into the answer."""
 
 
+def _wait_for_clock(timeout: float) -> None:
+    """Sleeps ``timeout`` wall seconds at most, less when /clock ticks: rospy notifies this
+    condition on every /clock message (it is how rospy.sleep waits), so a loop paced in
+    simulated time wakes as time moves, and still wakes when it does not."""
+    condition = rospy.rostime.get_rostime_cond()
+    with condition:
+        condition.wait(timeout)
+
+
 class RotateService:
-    def __init__(self, config: Config):
+    """The service and its odometry. The clocks and the wait are attributes so that unit
+    tests can run a rotation without a master."""
+
+    def __init__(self, config: Config, sim_now: Callable[[], float] = rospy.get_time,
+                 wall_now: Callable[[], float] = time.monotonic,
+                 wait: Callable[[float], None] = _wait_for_clock):
         self.config = config
+        self.sim_now, self.wall_now, self.wait = sim_now, wall_now, wait
         self.yaw = YawAccumulator()
         self.yaw_rate = 0.0
-        self.odom_stamp = None  # wall time of the latest odometry
+        self.odometry = OdometryWatch(config.odom_timeout, "odom")
+        self.jumps = JumpDetector(config.motion_limits)
+        self.fault: Optional[str] = None  # a jump seen while a rotation runs
+        self._rotating = False
         self._busy = threading.Lock()
         self._odom_lock = threading.Lock()
+        self.command = None
 
     def start(self) -> None:
+        self.odometry.topic = rospy.resolve_name("odom")
         self.command = rospy.Publisher("cmd_vel", Twist, queue_size=1)
         rospy.Subscriber("odom", Odometry, self._on_odometry, queue_size=10)
         rospy.on_shutdown(self.stop_robot)
@@ -75,19 +117,26 @@ class RotateService:
         rospy.loginfo("Service Ready")
 
     def _on_odometry(self, message: Odometry) -> None:
-        q = message.pose.pose.orientation
-        yaw = math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z))
+        p, q = message.pose.pose.position, message.pose.pose.orientation
+        yaw = euler_from_quaternion((q.x, q.y, q.z, q.w))[2]
+        sample = OdometrySample(message.header.stamp.to_sec(), p.x, p.y, yaw)
         with self._odom_lock:
-            self.yaw.update(yaw)
+            jump = self.jumps.check(sample)
+            if jump is None:
+                self.yaw.update(yaw)
+            else:
+                self.yaw.rebase(yaw)  # a teleport is not turning
+                if self._rotating and self.fault is None:
+                    self.fault = jump
             self.yaw_rate = message.twist.twist.angular.z
-            self.odom_stamp = time.monotonic()
+            self.odometry.received(sample.stamp, self.wall_now())
 
     def current_yaw(self):
         with self._odom_lock:
-            return self.yaw.total, self.yaw_rate, self.odom_stamp
+            return self.yaw.total, self.yaw_rate
 
     def stop_robot(self) -> None:
-        self.command.publish(Twist())
+        self._turn(0.0)
 
     def _turn(self, speed: float) -> None:
         twist = Twist()
@@ -108,52 +157,105 @@ class RotateService:
                 result = self._rotate(request.degrees)
             except RotationFailed as failure:
                 result = f"failure: {failure}"
+            except rospy.exceptions.ROSTimeMovedBackwardsException as jump:
+                # rospy's own waits raise it; ours name it first, this is the safety net
+                now = self.sim_now()
+                result = "failure: " + time_moved_backwards(now + jump.time, now,
+                                                            "simulated time")
+            except rospy.exceptions.ROSInterruptException:
+                result = "failure: the node is shutting down"
             finally:
+                with self._odom_lock:
+                    self._rotating = False
                 self.stop_robot()
                 self._busy.release()
         rospy.loginfo(f"Service Completed: {result}")
         return RotateResponse(result)
 
-    def _wait_for_odometry(self) -> float:
-        deadline = time.monotonic() + self.config.odom_timeout
-        while not rospy.is_shutdown():
-            total, _, stamp = self.current_yaw()
-            if stamp is not None and time.monotonic() - stamp < self.config.odom_timeout:
-                return total
-            if time.monotonic() > deadline:
-                raise RotationFailed(f"no odometry on {rospy.resolve_name('odom')} within "
-                                     f"{self.config.odom_timeout:g} s; the robot did not move")
-            time.sleep(0.05)
-        raise RotationFailed("the node is shutting down")
-
     def _rotate(self, degrees: int) -> str:
+        with self._odom_lock:
+            self.fault, self._rotating = None, True
+        watch = ClockWatch(self.sim_now, self.wall_now, self.config.odom_timeout)
+        start = self._wait_for_odometry(watch)
+        try:
+            return self._turn_by(degrees, start, watch)
+        except GuardTripped as cause:
+            total, _ = self.current_yaw()
+            raise RotationFailed(f"{cause}; turned {math.degrees(total - start):.1f} of "
+                                 f"{degrees} degrees") from None
+
+    def _guard(self, watch: ClockWatch, waiting_since: float) -> float:
+        """The simulated time, once nothing says the rotation must end (GuardTripped)."""
+        now = watch.check()
+        with self._odom_lock:
+            fault = self.fault
+        if fault is not None:
+            raise GuardTripped(fault)
+        silence = self.odometry.check(self.wall_now(), now, waiting_since)
+        if silence is not None:
+            raise GuardTripped(silence)
+        return now
+
+    def _wait_until(self, watch: ClockWatch, sim_time: float, waiting_since: float) -> float:
+        """Waits until simulated time reaches ``sim_time``, the guards checked on every
+        wake; returns the simulated time."""
+        while True:
+            if rospy.is_shutdown():
+                raise RotationFailed("the node is shutting down")
+            now = self._guard(watch, waiting_since)
+            if now >= sim_time:
+                return now
+            self.wait(min(sim_time - now, GUARD_POLL))
+
+    def _wait_for_odometry(self, watch: ClockWatch) -> float:
+        """The accumulated yaw once odometry is fresh; RotationFailed if none comes."""
+        since = self.wall_now()
+        try:
+            while not self.odometry.fresh(self.wall_now()):
+                if rospy.is_shutdown():
+                    raise RotationFailed("the node is shutting down")
+                self._guard(watch, since)
+                self.wait(GUARD_POLL)
+        except GuardTripped as cause:
+            raise RotationFailed(f"{cause}; the robot did not move") from None
+        with self._odom_lock:
+            self.fault = None  # a jump before the start moved no goal
+        return self.current_yaw()[0]
+
+    def _turn_by(self, degrees: int, start: float, watch: ClockWatch) -> str:
         config, gains = self.config, self.config.gains
-        start = self._wait_for_odometry()
         if degrees == 0:
             return "success: rotated 0 degrees (final error 0.0 degrees)"
+        since = self.wall_now()
+        period = 1.0 / config.control_rate
         target = start + math.radians(degrees)
-        rate = rospy.Rate(config.control_rate)
-        began = rospy.get_time()
+        began = watch.check()
         deadline = began + time_allowed(math.radians(degrees), gains, config.time_margin,
                                         config.time_slack)
         progress_yaw, progress_time = start, began
-        while not rospy.is_shutdown():
-            total, _, stamp = self.current_yaw()
-            now = rospy.get_time()
-            if time.monotonic() - stamp > config.odom_timeout:
-                raise RotationFailed(f"odometry stopped for {config.odom_timeout:g} s "
-                                     f"after {math.degrees(total - start):.1f} degrees")
+        now = began
+        while True:
+            now = self._wait_until(watch, now, since)
+            total, _ = self.current_yaw()
             error = target - total
             speed = angular_speed(error, gains)
             if speed == 0.0:
-                final_error = self._settle(target)
+                final_error = self._settle(target, watch, since)
+                self._guard(watch, since)  # the last reading may have been a jump
                 if abs(final_error) <= gains.tolerance:
                     return (f"success: rotated {degrees} degrees (final error "
                             f"{abs(math.degrees(final_error)):.1f} degrees)")
+                now = self.sim_now()
                 continue  # it drifted out while stopping: turn again
             if abs(total - progress_yaw) >= math.radians(config.stall_degrees):
                 progress_yaw, progress_time = total, now
             elif now - progress_time > config.stall_seconds:
+                last_odometry = self.odometry.last_stamp
+                if last_odometry is not None and now - last_odometry > config.stall_seconds:
+                    # no progress because nothing measures it: say so, not "blocked"
+                    raise GuardTripped(
+                        f"no odometry on {self.odometry.topic} for {now - last_odometry:.1f} s "
+                        f"while simulated time runs (odometry stopped)")
                 raise RotationFailed(
                     f"the robot does not turn (blocked?): {math.degrees(total - start):.1f} of "
                     f"{degrees} degrees done, no progress for {config.stall_seconds:g} s")
@@ -161,20 +263,19 @@ class RotateService:
                 raise RotationFailed(f"timed out after {now - began:.1f} s with "
                                      f"{math.degrees(error):.1f} degrees to go")
             self._turn(speed)
-            rate.sleep()
-        raise RotationFailed("the node is shutting down")
+            now += period
 
-    def _settle(self, target: float) -> float:
+    def _settle(self, target: float, watch: ClockWatch, since: float) -> float:
         """Stops, waits until the robot is still (or settle_seconds), returns the error."""
         self.stop_robot()
-        until = rospy.get_time() + self.config.settle_seconds
-        rate = rospy.Rate(self.config.control_rate)
-        while not rospy.is_shutdown() and rospy.get_time() < until:
-            _, yaw_rate, _ = self.current_yaw()
+        now = watch.check()
+        until = now + self.config.settle_seconds
+        while now < until:
+            _, yaw_rate = self.current_yaw()
             if abs(yaw_rate) < self.config.settle_speed:
                 break
-            rate.sleep()
-        total, _, _ = self.current_yaw()
+            now = self._wait_until(watch, now + 1.0 / self.config.control_rate, since)
+        total, _ = self.current_yaw()
         return target - total
 
 

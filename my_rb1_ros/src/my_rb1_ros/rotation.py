@@ -22,6 +22,13 @@ class YawAccumulator:
         self._last = yaw
         return self.total
 
+    def rebase(self, yaw: float) -> None:
+        """Readings go on from ``yaw`` without the change to it being counted: a teleport
+        (a simulation reset) is not turning."""
+        if self._last is None:
+            self.total = yaw
+        self._last = yaw
+
 
 @dataclass
 class RotationGains:
