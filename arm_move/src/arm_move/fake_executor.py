@@ -8,7 +8,9 @@ The arm starts in the named pose ``~initial_pose`` (sleep), the gripper open. A 
 unknown joints, mismatched lengths or non-finite numbers is refused (INVALID_JOINTS /
 INVALID_GOAL); a new goal on a controller replaces the one running, which is preempted.
 Trajectories are sampled as the simulator's JointTrajectoryController samples them
-(sim_bridge.trajectory), on the ROS clock.
+(sim_bridge.trajectory), on the ROS clock. ``~abort_after`` (s; negative, the default:
+never) makes it a failing driver for tests: every arm goal is aborted that long into its
+motion with PATH_TOLERANCE_VIOLATED, as a controller whose path tolerance was exceeded.
 """
 from __future__ import annotations
 
@@ -36,12 +38,13 @@ class FakeController:
     """One controller: its joints' positions, and the trajectory they follow."""
 
     def __init__(self, name: str, joints: Sequence[str], positions: Dict[str, float],
-                 lock: threading.Lock, rate: float, publish_state):
+                 lock: threading.Lock, rate: float, publish_state, abort_after: float = -1.0):
         self.publish_state = publish_state  # called once a goal is reached, before the result
         self.joints = list(joints)
         self.positions = positions
         self.lock = lock
         self.rate = rate
+        self.abort_after = abort_after
         self.server = actionlib.SimpleActionServer(f"{name}/follow_joint_trajectory",
                                                    FollowJointTrajectoryAction,
                                                    execute_cb=self._execute, auto_start=False)
@@ -84,6 +87,13 @@ class FakeController:
             positions, _, _ = plan.sample(elapsed)
             with self.lock:
                 self.positions.update(zip(self.joints, map(float, positions)))
+            if 0.0 <= self.abort_after <= elapsed:
+                self.publish_state()
+                text = f"aborted {self.abort_after:.2f} s into the motion (~abort_after)"
+                rospy.logwarn("fake_executor: %s", text)
+                self.server.set_aborted(Result(error_code=Result.PATH_TOLERANCE_VIOLATED,
+                                               error_string=text), text)
+                return
             if elapsed >= plan.end_time:
                 break
             rate.sleep()
@@ -97,6 +107,7 @@ def main(argv=None) -> None:
     config_path = rospy.get_param("~robot_config", os.path.join(package, "config", "px100.yaml"))
     pose_name = rospy.get_param("~initial_pose", "sleep")
     rate = float(rospy.get_param("~rate", 50.0))
+    abort_after = float(rospy.get_param("~abort_after", -1.0))
     with open(config_path) as stream:
         config = yaml.safe_load(stream)
     if pose_name not in config["named_poses"] or not rate > 0:
@@ -118,9 +129,11 @@ def main(argv=None) -> None:
         except rospy.ROSException:  # shutting down
             pass
 
-    FakeController("arm_controller", ARM_JOINTS, positions, lock, rate, publish_state)
+    FakeController("arm_controller", ARM_JOINTS, positions, lock, rate, publish_state,
+                   abort_after)
     FakeController("gripper_controller", FINGER_JOINTS, positions, lock, rate, publish_state)
-    rospy.loginfo("fake_executor: joints follow trajectories exactly, starting at %s", pose_name)
+    rospy.loginfo("fake_executor: joints follow trajectories exactly, starting at %s%s", pose_name,
+                  f"; arm goals abort after {abort_after} s" if abort_after >= 0 else "")
     ticker = rospy.Rate(rate)
     while not rospy.is_shutdown():
         publish_state()

@@ -12,9 +12,11 @@ real driver provide them) and only then offers its services:
 - ``reset`` (arm_move/Reset): places the RealSense box (planning scene, and the simulation
   when ``/gazebo/set_model_state`` answers), then moves the arm to Home around it, gripper
   open; ``clear_waypoints`` forgets the list.
-- ``step`` (arm_move/Step): plans the gripper point to a position; on SUCCESS appends
-  ``[x, y, z, gripper_open]`` to ``~waypoints`` and moves, then opens or closes the gripper.
-  On failure nothing moves and the list stays as it was; the code says why (see
+- ``step`` (arm_move/Step): plans the gripper point to a position, moves, then opens or
+  closes the gripper; only when all of that succeeded is ``[x, y, z, gripper_open]``
+  appended to ``~waypoints``. A planning failure moves nothing; a failed execution
+  (CONTROL_FAILED, TIMED_OUT) may leave the arm part of the way; either way the list stays
+  as it was and the code says why (see
   arm_move.planner: below the floor or NaN → INVALID_GOAL_CONSTRAINTS, out of reach →
   NO_IK_SOLUTION, inside an object → GOAL_IN_COLLISION...).
 - ``follow`` (arm_move/Follow): goes through the waypoints in order, once (the call returns
@@ -260,15 +262,21 @@ class Mover:
     def _step(self, request):
         target = (request.position.x, request.position.y, request.position.z)
         plan = self.move_to(target, request.gripper_open, "step")
+        rospy.loginfo("mover: step %s", plan.message)
+        try:
+            self._execute(plan)
+            self._execute_gripper(self._finger_for(request.gripper_open))
+        except Outcome as outcome:
+            # the waypoint is stored only once the motion is done: a failed step leaves the
+            # list as it was (the arm may have moved part of the way)
+            raise Outcome(outcome.code, f"step: {outcome.message}; no waypoint stored") from None
         waypoint = [float(v) for v in target] + [bool(request.gripper_open)]
         self.waypoints.append(waypoint)
         rospy.set_param("~waypoints", self.waypoints)
-        self._execute(plan)
-        self._execute_gripper(self._finger_for(request.gripper_open))
         return Codes.SUCCESS, (f"step: gripper at {np.round(target, 3).tolist()}, "
                                f"{'open' if request.gripper_open else 'closed'}; waypoint "
                                f"{len(self.waypoints)} stored (planned in "
-                               f"{1000 * plan.planning_seconds:.0f} ms)")
+                               f"{1000 * plan.planning_seconds:.0f} ms: {plan.message})")
 
     def _finger_for(self, gripper_open: bool) -> float:
         return self.k.finger_max if gripper_open else self.k.finger_min
