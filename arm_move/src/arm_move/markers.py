@@ -13,13 +13,14 @@ SCENE_COLOUR = ColorRGBA(0.2, 0.6, 0.3, 0.6)
 PATH_COLOUR = ColorRGBA(1.0, 0.5, 0.0, 1.0)
 
 
-def scene_markers(scene: Scene, frame: str, stamp) -> MarkerArray:
-    """One cube per scene box; deletes what was drawn before (objects may go away)."""
+def scene_markers(scene: Scene, frame: str, stamp, held: Sequence = ()) -> MarkerArray:
+    """One cube per scene box and per ``held`` box (an attached object where the hand holds
+    it); deletes what was drawn before (objects may go away)."""
     markers = MarkerArray()
     clear = Marker(action=Marker.DELETEALL)
     clear.header.frame_id = frame
     markers.markers.append(clear)
-    for index, box in enumerate(scene.boxes.values()):
+    for index, box in enumerate(list(scene.boxes.values()) + list(held)):
         marker = Marker(type=Marker.CUBE, action=Marker.ADD, id=index, ns=box.name,
                         color=SCENE_COLOUR)
         marker.header.frame_id, marker.header.stamp = frame, stamp

@@ -19,6 +19,10 @@ real driver provide them) and only then offers its services:
   as it was and the code says why (see
   arm_move.planner: below the floor or NaN → INVALID_GOAL_CONSTRAINTS, out of reach →
   NO_IK_SOLUTION, inside an object → GOAL_IN_COLLISION...).
+- The block (``pick_object``) is in the planning scene from the start, where
+  config/scene.yaml puts it. Closing the gripper around it attaches it to the hand (as
+  MoveIt's attachObject): from then on it moves with the hand and is checked against the
+  scene and the arm; opening the gripper detaches it where it is.
 - ``follow`` (arm_move/Follow): goes through the waypoints in order, once (the call returns
   when done) or repeating in the background until ``reset`` or another ``follow``.
   No waypoints: INVALID_MOTION_PLAN, nothing moves.
@@ -45,13 +49,15 @@ from sensor_msgs.msg import JointState
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 from visualization_msgs.msg import Marker, MarkerArray
 
-from arm_move.collision import Box
+import tf.transformations as tft
+
+from arm_move.collision import Box, fingers_around
 from arm_move.kinematics import ARM_JOINTS, FINGER_JOINTS
 from arm_move.markers import path_marker, scene_markers
 from arm_move.msg import MoveItErrorCodes as Codes
 from arm_move.planner import ArmPlanner, Plan, planner_from_config, settings_from
-from arm_move.scene_config import (REALSENSE_BOX, TABLE, empty_scene, unit_quaternion,
-                                   table_box)
+from arm_move.scene_config import (PICK_OBJECT, REALSENSE_BOX, TABLE, empty_scene, pick_box,
+                                   table_box, unit_quaternion)
 from arm_move.srv import (Follow, FollowResponse, Reset, ResetResponse, Step, StepResponse)
 
 
@@ -104,6 +110,7 @@ class Mover:
         self.k = planner.k
         self.scene_config = scene_config
         self.scene = empty_scene(scene_config)
+        self.finger_length = float(planner.model.finger_length)
         self.waypoints = waypoints
         self._busy = threading.Lock()
         self._state_lock = threading.Lock()
@@ -119,10 +126,13 @@ class Mover:
                                             latch=True)
         self._path_topic = rospy.Publisher("planned_path", Marker, queue_size=1, latch=True)
         self.scene.add(table_box(self.scene_config))
-        if TABLE not in self.scene.boxes:  # what MoveIt users do: check the object arrived
-            raise RuntimeError("the table did not reach the planning scene")
+        self.scene.add(pick_box(self.scene_config))
+        for name in (TABLE, PICK_OBJECT):  # what MoveIt users do: check the objects arrived
+            if name not in self.scene.boxes:
+                raise RuntimeError(f"the {name} did not reach the planning scene")
         self._publish_scene()
-        rospy.loginfo("mover: planning scene has the %s (frame %s)", TABLE, frame)
+        rospy.loginfo("mover: planning scene has the %s and the %s (frame %s)", TABLE,
+                      PICK_OBJECT, frame)
         rospy.Subscriber("joint_states", JointState, self._on_joint_states, queue_size=10)
         timeout = self.settings.action_timeout
         self.arm = actionlib.SimpleActionClient("arm_controller/follow_joint_trajectory",
@@ -219,12 +229,14 @@ class Mover:
             raise Outcome(Codes.INVALID_GOAL_CONSTRAINTS, f"reset: box {error}") from None
         size = self.scene_config[REALSENSE_BOX]["size"]
         box = Box(REALSENSE_BOX, position, orientation, size)
+        arm, finger = self.current()
         trial = empty_scene(self.scene_config)
         for other in self.scene.boxes.values():
             if other.name != REALSENSE_BOX:
                 trial.add(other)
+        if self.scene.attached is not None:  # reset opens the gripper: it lets go
+            trial.add(self._held_box(arm))
         trial.add(box)
-        arm, finger = self.current()
         plan = self.planner.plan_to_joints(arm, self.k.finger_max, self.k.named_poses["home"],
                                            trial)
         if plan.code == Codes.START_STATE_IN_COLLISION:
@@ -261,11 +273,12 @@ class Mover:
     # --- step ----------------------------------------------------------------------------
     def _step(self, request):
         target = (request.position.x, request.position.y, request.position.z)
-        plan = self.move_to(target, request.gripper_open, "step")
+        plan, grasps = self.move_to(target, request.gripper_open, "step")
         rospy.loginfo("mover: step %s", plan.message)
         try:
             self._execute(plan)
             self._execute_gripper(self._finger_for(request.gripper_open))
+            self._grasp_or_release(plan.path[-1], request.gripper_open, grasps)
         except Outcome as outcome:
             # the waypoint is stored only once the motion is done: a failed step leaves the
             # list as it was (the arm may have moved part of the way)
@@ -281,19 +294,67 @@ class Mover:
     def _finger_for(self, gripper_open: bool) -> float:
         return self.k.finger_max if gripper_open else self.k.finger_min
 
-    def move_to(self, target, gripper_open: bool, what: str) -> Plan:
-        """Plans to a target; Outcome when it cannot be done (nothing has moved)."""
+    def move_to(self, target, gripper_open: bool, what: str):
+        """Plans to a target: the plan, and whether closing the gripper there grasps the
+        block; Outcome when it cannot be done (nothing has moved)."""
         arm, finger = self.current()
+        block = self.scene.boxes.get(PICK_OBJECT)
+        # approaching the block to grasp it, the fingers may touch it (MoveIt's pick allows
+        # the gripper's touch links that); elsewhere it is an obstacle like any other
+        self.scene.touch_allowed = PICK_OBJECT if block is not None and fingers_around(
+            block, target, self.k.finger_max, self.finger_length) else None
         plan = self.planner.plan_to_position(arm, finger, target, self.scene)
         self._require(plan, what)
-        # the gripper opens or closes at the target: that must be free as well
-        hit = self.planner.model.collision(plan.path[-1], self._finger_for(gripper_open),
-                                           self.scene)
-        if hit:
+        # the gripper opens or closes at the target: that must be free as well, except that
+        # closing it around the block is a grasp
+        goal, opening = plan.path[-1], self._finger_for(gripper_open)
+        hit = self.planner.model.collision(goal, opening, self.scene)
+        grasps = not gripper_open and self.scene.touch_allowed == PICK_OBJECT and \
+            self._grasps(goal, opening)
+        if hit and not grasps:
             raise Outcome(Codes.GOAL_IN_COLLISION, f"{what}: {'opening' if gripper_open else 'closing'}"
                           f" the gripper at the target would touch {hit}")
         self._publish_path(plan)
-        return plan
+        return plan, grasps
+
+    def _grasps(self, q, opening: float) -> bool:
+        """Whether closing the gripper at q closes it on the block: the block's centre lies
+        between the fingers, and the closed fingers would touch it."""
+        block = self.scene.boxes.get(PICK_OBJECT)
+        if block is None or self.scene.attached is not None:
+            return False
+        origin, axes = self.planner.model.hand_frames(np.asarray(q)[None])
+        if abs(float((block.center - origin[0]) @ axes[0][:, 1])) >= self.k.finger_max:
+            return False
+        alone = empty_scene(self.scene_config)
+        alone.add(block)
+        return self.planner.model.collision(q, opening, alone) == PICK_OBJECT
+
+    def _held_box(self, q) -> Box:
+        """The attached block as a scene box where the hand at q holds it."""
+        attached = self.scene.attached
+        centre, rotation = self.planner.model.attached_pose(attached, q)
+        matrix = np.eye(4)
+        matrix[:3, :3] = rotation
+        return Box(attached.name, centre, tuple(tft.quaternion_from_matrix(matrix)),
+                   attached.size)
+
+    def _grasp_or_release(self, q, gripper_open: bool, grasps: bool) -> None:
+        """After the gripper moved at q: a grasp attaches the block to the hand (MoveIt's
+        attachObject); opening the gripper detaches a held block where it is."""
+        if grasps:
+            block = self.scene.boxes[PICK_OBJECT]
+            self.scene.remove(PICK_OBJECT)
+            self.scene.attached = self.planner.model.attach(PICK_OBJECT, block, q)
+            rospy.loginfo("mover: %s attached to the gripper", PICK_OBJECT)
+        elif gripper_open and self.scene.attached is not None:
+            box = self._held_box(q)
+            self.scene.attached = None
+            self.scene.add(box)
+            rospy.loginfo("mover: %s detached at %s", box.name, np.round(box.center, 3).tolist())
+        else:
+            return
+        self._publish_scene()
 
     @staticmethod
     def _require(plan: Plan, what: str) -> None:
@@ -320,11 +381,13 @@ class Mover:
             if self._stop_cycle.is_set():
                 raise Outcome(Codes.PREEMPTED, "follow: stopped")
             try:
-                plan = self.move_to((x, y, z), gripper_open, f"follow, waypoint {index + 1}")
+                plan, grasps = self.move_to((x, y, z), gripper_open,
+                                            f"follow, waypoint {index + 1}")
             except Outcome as outcome:
                 raise Outcome(outcome.code, outcome.message.replace("; nothing moved", "")) from None
             self._execute(plan)
             self._execute_gripper(self._finger_for(gripper_open))
+            self._grasp_or_release(plan.path[-1], gripper_open, grasps)
 
     def _repeat(self, waypoints) -> None:
         with self._busy:
@@ -383,8 +446,11 @@ class Mover:
 
     # --- markers -------------------------------------------------------------------------
     def _publish_scene(self) -> None:
+        held = []
+        if self.scene.attached is not None and self._positions:
+            held = [self._held_box(self.current()[0])]
         self._scene_topic.publish(scene_markers(self.scene, self.settings.planning_frame,
-                                                rospy.Time.now()))
+                                                rospy.Time.now(), held))
 
     def _publish_path(self, plan: Plan) -> None:
         points = [self.k.gripper_point(q) for q in plan.positions]

@@ -161,11 +161,54 @@ class ArmPlanner:
         plan = self._check_start(start, finger, scene)
         if plan is not None:
             return plan
-        candidates = list(self.k.ik_candidates(target, self.pitches()))
+        goals = self.ranked_goals(start, finger, target, scene)
+        if isinstance(goals, Plan):
+            return goals
+        plan = self._search(start, goals, finger, scene)
+        if plan.ok:
+            plan.message = f"planned: {self.describe_goal(plan.path[-1], target)}"
+        return plan
+
+    # --- choosing among IK solutions -----------------------------------------------------
+    @property
+    def travel_weights(self) -> np.ndarray:
+        """Per arm joint, how far one radian of it moves the gripper point at Home (m/rad):
+        a joint's travel weighs as much as the motion it causes at the gripper."""
+        home = self.k.named_poses["home"]
+        shoulder, elbow, wrist, grip, _ = self.k.planar_points(home)
+        return np.array([abs(grip[0]), np.linalg.norm(grip - shoulder),
+                         np.linalg.norm(grip - elbow), np.linalg.norm(grip - wrist)])
+
+    def travel(self, start: np.ndarray, goals: np.ndarray) -> np.ndarray:
+        """Weighted joint travel (m) from the start to each goal (no joint wraps: the waist
+        stops at +-180 degrees)."""
+        return np.abs(np.atleast_2d(goals) - start) @ self.travel_weights
+
+    @staticmethod
+    def faces(waist: np.ndarray, target: Sequence[float]) -> np.ndarray:
+        """Whether waist angles face the target: within 90 degrees of its bearing (every
+        angle faces a target straight above the waist)."""
+        if math.hypot(target[0], target[1]) < 1e-9:
+            return np.ones(np.shape(waist), bool)
+        bearing = math.atan2(target[1], target[0])
+        off = np.arctan2(np.sin(waist - bearing), np.cos(waist - bearing))
+        return np.abs(off) <= math.pi / 2
+
+    def ranked_goals(self, start: np.ndarray, finger: float, target: np.ndarray, scene: Scene):
+        """The free IK solutions the search may end at, best first, or a Plan saying why
+        there are none. Best: a waist facing the target whenever such a solution is free
+        (reaching back over the base is for targets that cannot be reached otherwise),
+        then the preferred gripper pitch (straight down grasps and sets objects down
+        squarely), then the least weighted joint travel from the start."""
+        candidates, ranks = [], []
+        for rank, pitch in enumerate(self.pitches()):
+            for q in self.k.ik(target, pitch):
+                candidates.append(q)
+                ranks.append(rank)
         if not candidates:
             return Plan(Codes.NO_IK_SOLUTION, f"no joint solution within the limits puts the "
                         f"gripper at {target.round(3).tolist()} (out of reach)")
-        goals = np.array(candidates)
+        goals, ranks = np.array(candidates), np.array(ranks)
         free = self.model.valid(goals, finger, scene, self.settings.goal_margin)
         if not free.any():
             hits = Counter(self.model.collision(q, finger, scene, self.settings.goal_margin)
@@ -173,7 +216,19 @@ class ArmPlanner:
             what = ", ".join(f"{name}" for name, _ in hits.most_common())
             return Plan(Codes.GOAL_IN_COLLISION, f"every joint solution for "
                         f"{target.round(3).tolist()} touches something ({what})")
-        return self._search(start, list(goals[free][:self.settings.goal_count]), finger, scene)
+        facing = self.faces(goals[:, 0], target)
+        keep = free & facing if np.any(free & facing) else free
+        goals, ranks = goals[keep], ranks[keep]
+        order = np.lexsort((self.travel(start, goals), ranks))
+        return [goals[i] for i in order[:self.settings.goal_count]]
+
+    def describe_goal(self, q: np.ndarray, target: Sequence[float]) -> str:
+        """The chosen solution in words: waist (facing the target or reaching back), the
+        gripper's pitch, the joints."""
+        facing = bool(self.faces(np.array([q[0]]), target)[0])
+        pitch = math.degrees(q[1] + q[2] + q[3])
+        return (f"waist {q[0]:.2f} rad ({'faces the target' if facing else 'reaches back over the base'}), "
+                f"gripper pitch {pitch:.0f} deg, joints {np.round(q, 3).tolist()}")
 
     def _search(self, start: np.ndarray, goals: List[np.ndarray], finger: float,
                 scene: Scene) -> Plan:
@@ -294,7 +349,8 @@ def planner_from_config(robot: Mapping, settings: Mapping) -> ArmPlanner:
     kinematics = ArmKinematics.from_config(robot)
     model = ArmCollisionModel(kinematics, robot["links"], robot["finger"],
                               float(settings.get("collision_padding", 0.005)),
-                              robot["self_collision_pairs"])
+                              robot.get("self_collision_pairs"),  # none: from the geometry
+                              float(settings.get("attached_contact_tolerance", 0.001)))
     return ArmPlanner(kinematics, model, settings_from(PlannerSettings, settings))
 
 

@@ -11,11 +11,18 @@ from arm_move.collision import Box, Scene
 
 TABLE = "table"
 REALSENSE_BOX = "realsense_box"
+PICK_OBJECT = "pick_object"
 
 
 def table_box(config: Mapping) -> Box:
     table = config["table"]
     return Box.upright(TABLE, table["center"], table["size"])
+
+
+def pick_box(config: Mapping) -> Box:
+    """The block the gripper picks up, standing on the table where the yaml puts it."""
+    block = config[PICK_OBJECT]
+    return Box.upright(PICK_OBJECT, block["position"], block["size"], block.get("yaw", 0.0))
 
 
 def empty_scene(config: Mapping) -> Scene:
@@ -36,10 +43,12 @@ def unit_quaternion(x: float, y: float, z: float, w: float) -> Tuple[float, ...]
 
 
 def world_scene(config: Mapping) -> Scene:
-    """The scene as the world starts: the table, and the RealSense box where the yaml puts
-    it (the mover itself starts with the table only, and places the box on reset)."""
+    """The scene as the world starts: the table, the block, and the RealSense box where the
+    yaml puts it (the mover itself starts with the table and the block, and places the box
+    on reset)."""
     scene = empty_scene(config)
     scene.add(table_box(config))
+    scene.add(pick_box(config))
     box = config[REALSENSE_BOX]
     scene.add(Box.upright(REALSENSE_BOX, box["position"], box["size"], box["yaw"]))
     return scene

@@ -72,6 +72,30 @@ class IndependentChecker:
                         return name
         return None
 
+    def clearance(self, path, finger, obstacle, step_degrees=1.0, reach=0.1):
+        """The least distance (m) between the arm's moving links and one obstacle (by name)
+        over the dense path; ``reach`` when nothing comes that close."""
+        body = dict(self.obstacles)[obstacle]
+        least = reach
+        for q in self.dense(path, step_degrees):
+            self.touches(q, finger)  # sets the joints
+            for group in MOVING_GROUPS:
+                for link in self.group_links[group]:
+                    for point in pb.getClosestPoints(self.arm, body, reach, link, -1,
+                                                     physicsClientId=self.client):
+                        least = min(least, point[8])
+        return least
+
+    @staticmethod
+    def dense(path, step_degrees=1.0):
+        """The path's states, no more than ``step_degrees`` apart in every joint."""
+        step = math.radians(step_degrees)
+        for a, b in zip(path, path[1:]):
+            a, b = np.asarray(a, float), np.asarray(b, float)
+            count = max(1, int(math.ceil(np.max(np.abs(b - a)) / step)))
+            for t in np.linspace(0.0, 1.0, count + 1):
+                yield a + t * (b - a)
+
     def first_collision(self, path, finger, step_degrees=1.0):
         """The first state along the path (dense) that touches something, or None."""
         step = math.radians(step_degrees)

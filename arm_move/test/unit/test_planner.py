@@ -33,7 +33,7 @@ def urdf(tmp_path_factory):
 def checker(urdf):
     scene = table_scene()
     config = arm_config()
-    check = IndependentChecker(urdf, config["name"], config["self_collision_pairs"],
+    check = IndependentChecker(urdf, config["name"], planner().model.self_pairs,
                                list(scene.boxes.values()), scene.floor_z)
     yield check
     check.close()
