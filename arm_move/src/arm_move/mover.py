@@ -299,10 +299,12 @@ class Mover:
         block; Outcome when it cannot be done (nothing has moved)."""
         arm, finger = self.current()
         block = self.scene.boxes.get(PICK_OBJECT)
-        # approaching the block to grasp it, the fingers may touch it (MoveIt's pick allows
-        # the gripper's touch links that); elsewhere it is an obstacle like any other
-        self.scene.touch_allowed = PICK_OBJECT if block is not None and fingers_around(
-            block, target, self.k.finger_max, self.finger_length) else None
+        # approaching the block to grasp it, or leaving it after letting go, the gripper may
+        # touch it (MoveIt's pick and place allow the end effector's touch links that on
+        # approach and retreat); elsewhere it is an obstacle like any other
+        self.scene.touch_allowed = PICK_OBJECT if block is not None and any(
+            fingers_around(block, point, self.k.finger_max, self.finger_length)
+            for point in (target, self.k.gripper_point(arm))) else None
         plan = self.planner.plan_to_position(arm, finger, target, self.scene)
         self._require(plan, what)
         # the gripper opens or closes at the target: that must be free as well, except that
