@@ -16,6 +16,7 @@ once per tag, naming it, instead of ignoring it silently.
 """
 from __future__ import annotations
 
+import math
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from typing import Dict, List, Optional, Set, Tuple
@@ -41,6 +42,8 @@ class LinkSurface:
     kp: Optional[float] = None
     kd: Optional[float] = None
     min_depth: Optional[float] = None
+    # Gazebo's first friction direction, in the link's frame (sim_bridge.tyre_friction)
+    fdir1: Optional[Tuple[float, float, float]] = None
     material: Optional[str] = None
     self_collide: bool = False
     gravity: bool = True
@@ -94,6 +97,17 @@ def _float(text: str, what: str, source: str) -> float:
         return float(text)
     except ValueError:
         raise UrdfError(f"{source}: {what} '{text}' is not a number") from None
+
+
+def _direction(text: str, what: str, source: str) -> Optional[Tuple[float, float, float]]:
+    """Three numbers; None for Gazebo's "0 0 0" (no direction given)."""
+    parts = text.split()
+    if len(parts) != 3:
+        raise UrdfError(f"{source}: {what} '{text}' is not three numbers")
+    vector = tuple(_float(p, what, source) for p in parts)
+    if not all(math.isfinite(v) for v in vector):
+        raise UrdfError(f"{source}: {what} '{text}' is not three finite numbers")
+    return vector if any(vector) else None
 
 
 def _bool(text: str) -> bool:
@@ -162,13 +176,15 @@ def read_gazebo_tags(model: RobotModel) -> GazeboTags:
                     surface.kd = _float(text, what, source)
                 elif tag == "minDepth":
                     surface.min_depth = _float(text, what, source)
+                elif tag == "fdir1":
+                    surface.fdir1 = _direction(text, what, source)
                 elif tag == "material":
                     surface.material = text
                 elif tag == "selfCollide":
                     surface.self_collide = _bool(text)
                 elif tag in ("gravity", "turnGravityOff"):
                     surface.gravity = _bool(text) if tag == "gravity" else not _bool(text)
-                else:  # fdir1, maxVel, maxContacts, dampingFactor, laserRetro, ...
+                else:  # maxVel, maxContacts, dampingFactor, laserRetro, ...
                     not_emulated.setdefault(tag, f"link '{reference}'")
     return GazeboTags(surfaces, plugins, sensors, robot_self_collide, not_emulated)
 

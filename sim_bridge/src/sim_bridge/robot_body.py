@@ -37,7 +37,9 @@ pybullet differs from Gazebo in ways that matter here, and this module hides the
   collision falls back to the link's other collision shapes, else to the bounding box of
   the link's readable visual meshes, else it is dropped and the link keeps its inertial;
   each with one warning naming the link, the file and what was done;
-- a root link named ``world`` fixes the robot to the world, as in Gazebo.
+- a root link named ``world`` fixes the robot to the world, as in Gazebo;
+- pybullet's friction for a robot depends on its heading (:mod:`sim_bridge.tyre_friction`):
+  the tyres' friction is computed there, and :attr:`RobotBody.tyres` lists them.
 """
 from __future__ import annotations
 
@@ -51,9 +53,10 @@ from typing import Dict, List, Mapping, Optional, Sequence, Tuple
 import numpy as np
 import pybullet as pb
 
-from sim_bridge.gazebo_tags import GazeboTags
+from sim_bridge.gazebo_tags import GazeboTags, LinkSurface
 from sim_bridge.materials import gazebo_colour
 from sim_bridge.mesh_files import MeshError, bounds, collision_fallback, loadable_file
+from sim_bridge.tyre_friction import Tyre
 from urdf_tools.kinematics import rpy_matrix
 from urdf_tools.model import RobotModel, UrdfError
 
@@ -219,6 +222,33 @@ def _rotation_axis(model: RobotModel, link: str) -> Optional[np.ndarray]:
     return axis / np.linalg.norm(axis)
 
 
+def _tyre_axle(model: RobotModel, link: str) -> Optional[np.ndarray]:
+    """The axis ``link`` turns about when it is a tyre: a collision cylinder turning about
+    its own axis on a continuous or revolute joint (what :func:`crown_wheels` crowns)."""
+    axis = _rotation_axis(model, link)
+    if axis is None:
+        return None
+    for shape in model.links[link].collisions:
+        along = rpy_matrix(*shape.origin.rpy)[:, 2]
+        if shape.geometry.kind == "cylinder" and abs(float(along @ axis)) >= 0.999:
+            return axis
+    return None
+
+
+def tyres(model: RobotModel, tags: GazeboTags, link_index: Mapping[str, int]) -> List[Tyre]:
+    """The links whose contacts get :mod:`sim_bridge.tyre_friction`: the tyres, and the
+    links whose ``<gazebo>`` gives ``fdir1``."""
+    found = []
+    for name, index in link_index.items():
+        surface = tags.surfaces.get(name, LinkSurface())
+        axle = _tyre_axle(model, name)
+        if axle is None and surface.fdir1 is None:
+            continue
+        found.append(Tyre(index, surface.mu1, surface.mu2, surface.fdir1,
+                          None if axle is None else tuple(float(a) for a in axle)))
+    return found
+
+
 def _vector(text: Optional[str]) -> np.ndarray:
     return np.array([float(v) for v in (text or "0 0 0").split()])
 
@@ -273,6 +303,9 @@ def prepare_urdf(xml: str, model: RobotModel, tags: GazeboTags, warn) -> str:
     for tag in ("gazebo", "transmission"):
         for element in root.findall(tag):
             root.remove(element)
+    # one element a line: pybullet's importer refuses a line longer than about 8 KB, and
+    # a valid URDF may be written on one line
+    ET.indent(root)
     return ET.tostring(root, encoding="unicode")
 
 
@@ -309,6 +342,8 @@ class RobotBody:
         self.weightless_links: List[Tuple[int, float]] = []
         self._apply_joint_settings()
         self._apply_surfaces(tags, warn)
+        # their friction is sim_bridge.tyre_friction's, which the world applies each step
+        self.tyres = tyres(model, tags, self.link_index)
 
     # --- set-up ---------------------------------------------------------------------
     def _apply_joint_settings(self) -> None:

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Set, Tuple, Union
 
 import numpy as np
 import pybullet as pb
@@ -37,6 +37,7 @@ from sim_bridge.poses import (compose6, normalized, pose6_matrix, pose6_to_posit
 from sim_bridge.ray_caster import Primitive, ShapeSet, cast, primitive_for
 from sim_bridge.robot_body import RobotBody
 from sim_bridge.sdf_world import ModelSpec, ShapeSpec, WorldSpec
+from sim_bridge.tyre_friction import TyreFriction
 from urdf_tools.kinematics import matrix_rpy, origin_transform
 from urdf_tools.model import UrdfError, parse_urdf
 
@@ -96,6 +97,8 @@ class Model:
     robot: Optional[RobotBody] = None
     tags: Optional[GazeboTags] = None
     plugins: List[Plugin] = field(default_factory=list)
+    # robots with tyres: their friction, applied before each step
+    friction: Optional[TyreFriction] = None
     initial_joints: Dict[str, float] = field(default_factory=dict)
     # for static models: where they are (they never move), their bodies and shapes
     position: Vec3 = (0.0, 0.0, 0.0)
@@ -207,6 +210,9 @@ class World:
         self._plugins: Optional[List[Plugin]] = None  # what step() calls
         self._has_meshes: Optional[bool] = None
         self._weightless: List[RobotBody] = []
+        self._frictions: List[TyreFriction] = []
+        # (body, link) of every robot's tyres (sim_bridge.tyre_friction)
+        self._tyres: Set[Tuple[int, int]] = set()
         self.now_ns = 0
         self.paused = False
         self.step_size = step_size
@@ -222,10 +228,14 @@ class World:
         pb.setGravity(*self.gravity, physicsClientId=self.client)
         pb.setTimeStep(self.step_size, physicsClientId=self.client)
         self._step_ns = int(round(self.step_size * 1e9))
-        # Friction as a pyramid, as Gazebo's ODE. A robot's (multibody's) contacts get a
-        # pyramid on the world's axes whatever this says (README, "pybullet facts").
+        # Friction as a pyramid, as Gazebo's ODE. A robot's (multibody's) contacts get it
+        # on the world's axes whatever this says, so tyres get theirs from
+        # sim_bridge.tyre_friction, whose slip scale follows the step.
         pb.setPhysicsEngineParameter(deterministicOverlappingPairs=1, enableConeFriction=0,
                                      physicsClientId=self.client)
+        for model in self.models.values():
+            if model.friction is not None:
+                model.friction.set_step_size(self.step_size)
 
     @property
     def step_ns(self) -> int:
@@ -490,12 +500,17 @@ class World:
         model = Model(name, "robot", tuple(position), tuple(orientation), namespace.strip("/"),
                       robot=robot, tags=tags, body=robot.id, initial_joints=joints,
                       structure=urdf_structure(description))
+        if robot.tyres:
+            model.friction = TyreFriction(self.client, robot.id, robot.tyres, self.step_size,
+                                          self._tyres)
         context = PluginContext(self.client, robot, name, model.namespace, self.bus,
                                 np.random.default_rng([self.seed, len(self.models)]),
                                 self.step_size, self.gravity, self.cast_rays, tf_prefix)
         try:
             model.plugins = create_plugins(context, tags)
         except Exception:
+            if model.friction is not None:
+                model.friction.remove()
             robot.remove()
             raise
         model.has_mesh = any(s.geometry.kind == "mesh" for link in description.links.values()
@@ -554,6 +569,8 @@ class World:
         if model.kind == "static":
             self._remove_static_bodies(model)
         elif model.robot is not None:
+            if model.friction is not None:
+                model.friction.remove()
             model.robot.remove()
         elif model.body is not None:
             pb.removeBody(model.body, physicsClientId=self.client)
@@ -868,12 +885,17 @@ class World:
             self._plugins = [p for m in self.models.values() for p in m.plugins]
             self._weightless = [m.robot for m in self.models.values()
                                 if m.robot is not None and m.robot.weightless_links]
+            self._frictions = [m.friction for m in self.models.values() if m.friction]
+            for friction in self._frictions:
+                friction.forget()
         for plugin in self._plugins:
             plugin.before_step(self.now_ns)
         for robot in self._weightless:
             robot.apply_weightlessness(self.gravity)
         if self.forces:
             self.forces.apply(self.now_ns)
+        for friction in self._frictions:
+            friction.apply()
         pb.stepSimulation(physicsClientId=self.client)
         self.now_ns += self._step_ns
         for plugin in self._plugins:

@@ -1,5 +1,5 @@
-"""The <gazebo> tag reader: values as text or as attributes; tags Gazebo reads that
-sim_bridge does not emulate are named, once each."""
+"""The <gazebo> tag reader: values as text or as attributes, fdir1 as a direction; tags
+Gazebo reads that sim_bridge does not emulate are named, once each."""
 from sim_bridge.gazebo_tags import read_gazebo_tags
 from urdf_tools.model import parse_urdf
 
@@ -14,6 +14,7 @@ ROBOT = """<robot name="r">
     <mu2>0.25</mu2>
     <kp value="1e6"/>
     <fdir1>1 0 0</fdir1>
+    <maxContacts>4</maxContacts>
     <maxVel>0.1</maxVel>
     <material value="Gazebo/Red"/>
   </gazebo>
@@ -36,13 +37,14 @@ def tags():
 def test_attribute_values_read_like_text():
     surface = tags().surfaces["wheel"]
     assert (surface.mu1, surface.mu2, surface.kp) == (0.5, 0.25, 1e6)
+    assert surface.fdir1 == (1.0, 0.0, 0.0)
     assert surface.material == "Gazebo/Red"
     plugin = tags().plugins[0]
     assert plugin.text("leftJoint") == "axle" and plugin.text("rightJoint") == "axle"
 
 
 def test_tags_not_emulated_are_named_once_with_where_first_seen():
-    assert tags().not_emulated == {"fdir1": "link 'wheel'", "maxVel": "link 'wheel'",
+    assert tags().not_emulated == {"maxContacts": "link 'wheel'", "maxVel": "link 'wheel'",
                                    "provideFeedback": "joint 'axle'",
                                    "static": "the robot's <gazebo>"}
 
@@ -51,4 +53,5 @@ def test_the_world_warns_once_per_tag(world, bus):
     world.spawn_urdf("r", ROBOT, (0, 0, 0.5))
     warnings = [w for w in bus.warnings if "not emulated" in w]
     assert len([w for w in warnings if "<maxVel>" in w]) == 1
-    assert any("<fdir1> in link 'wheel'" in w for w in warnings)
+    assert any("<maxContacts> in link 'wheel'" in w for w in warnings)
+    assert not any("<fdir1>" in w for w in warnings)  # emulated: sim_bridge.tyre_friction

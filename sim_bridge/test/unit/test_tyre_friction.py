@@ -1,0 +1,69 @@
+"""Tyres grip the same at every heading (sim_bridge.tyre_friction): the same command gives
+the same motion, in the robot's own starting frame, whichever way the robot faces in the
+world. Before, pybullet's friction on the world's axes made a skid-steer turn and a hard
+stop depend on the heading. Each case drives on an arc, stops hard and turns in place,
+so the tyres both roll and slip."""
+import math
+import os
+
+import pytest
+from geometry_msgs.msg import Twist
+from tf.transformations import euler_from_quaternion, quaternion_from_euler
+
+from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec
+from sim_bridge.world import World
+from urdf_tools.xacro_loader import expand
+
+from recording_bus import RecordingBus
+from world_fixtures import DATA, run
+
+HEADINGS = (0.0, 30.0, 45.0, 90.0)  # degrees
+# (linear m/s, angular rad/s, seconds): an arc, a hard stop, a turn in place, a stop
+ROUTINE = ((0.4, 0.5, 2.0), (0.0, 0.0, 0.5), (0.0, 1.0, 1.5), (0.0, 0.0, 0.5))
+TOLERANCE = 0.01  # of the distance driven and of the angle turned
+
+
+def drive(robot_file, yaw_degrees):
+    """(forward, left, turned): where the routine leaves the robot, in the frame it started
+    in (m, m, rad), from the simulator's true pose."""
+    bus = RecordingBus()
+    world = World(bus, ray_threads=1)
+    try:
+        world.add_sdf_model(ModelSpec("ground", True, links=[
+            LinkSpec("link", collisions=[ShapeSpec("plane")])]))
+        yaw = math.radians(yaw_degrees)
+        world.spawn_urdf("robot", expand(os.path.join(DATA, robot_file), {}),
+                         (1.0, -2.0, 0.1), quaternion_from_euler(0.0, 0.0, yaw))
+        run(world, 0.5)  # settles on its wheels
+        (x0, y0, _), q0 = world.pose("robot")
+        yaw0 = euler_from_quaternion(q0)[2]
+        turned, last = 0.0, yaw0
+        for linear, angular, seconds in ROUTINE:
+            twist = Twist()
+            twist.linear.x, twist.angular.z = linear, angular
+            bus.subscriptions["/cmd_vel"](twist)
+            for _ in range(int(round(seconds / 0.05))):
+                run(world, 0.05)
+                now = euler_from_quaternion(world.pose("robot")[1])[2]
+                turned += math.atan2(math.sin(now - last), math.cos(now - last))
+                last = now
+        (x1, y1, _), _ = world.pose("robot")
+        dx, dy = x1 - x0, y1 - y0
+        return (dx * math.cos(yaw0) + dy * math.sin(yaw0),
+                -dx * math.sin(yaw0) + dy * math.cos(yaw0), turned)
+    finally:
+        world.close()
+
+
+@pytest.mark.parametrize("robot_file", ["diff_bot.urdf.xacro", "skid_bot.urdf.xacro"])
+def test_the_same_command_moves_a_robot_the_same_at_every_heading(robot_file):
+    results = {heading: drive(robot_file, heading) for heading in HEADINGS}
+    forward, left, turned = results[0.0]
+    reach = math.hypot(forward, left)
+    assert reach > 0.3 and abs(turned) > 1.0, f"the routine barely moved it: {results}"
+    for heading, (f, l, t) in results.items():
+        assert math.hypot(f - forward, l - left) <= TOLERANCE * reach, \
+            f"at {heading} degrees it ended at ({f:.4f}, {l:.4f}) m, at 0 at " \
+            f"({forward:.4f}, {left:.4f}) m"
+        assert abs(t - turned) <= TOLERANCE * abs(turned), \
+            f"at {heading} degrees it turned {t:.4f} rad, at 0 {turned:.4f} rad"
