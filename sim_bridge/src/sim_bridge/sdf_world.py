@@ -20,6 +20,14 @@ console and /rosout, without this module importing rospy.
 The result is plain data (:class:`WorldSpec`, :class:`ModelSpec`); turning it into
 pybullet bodies is :mod:`sim_bridge.world`'s job. Every error names the file and the
 element, and for an unknown ``model://`` the folders searched.
+
+What cannot be simulated is refused with :class:`SdfError`, with urdf_tools' limits and
+words, so that a robot and a world are judged alike: a number that is not finite (a
+``<pose>`` of ``nan`` would put the model nowhere; get_model_state then reported NaN), a
+box side, cylinder radius or length or sphere radius of zero or less, a negative mass, a
+description larger than ``urdf_tools.model.MAX_DESCRIPTION_BYTES``, an ``<include>``
+that includes itself again (directly or through other models; the chain of URIs is named)
+or that nests deeper than :data:`MAX_INCLUDE_DEPTH`.
 """
 from __future__ import annotations
 
@@ -32,6 +40,11 @@ from typing import Callable, Dict, List, Optional, Sequence, Tuple
 from sim_bridge.materials import gazebo_colour
 from sim_bridge.mesh_files import MeshError, bounds, collision_fallback, loadable_file
 from sim_bridge.poses import compose6
+# urdf_tools' own checks and limits, so that SDF and URDF are refused alike and in the same
+# words (its UrdfError is turned into SdfError by _checked)
+from urdf_tools.model import MAX_DESCRIPTION_BYTES, UrdfError
+from urdf_tools.model import _finite as _urdf_finite
+from urdf_tools.model import _positive as _urdf_positive
 
 Pose6 = Tuple[float, float, float, float, float, float]
 ZERO_POSE: Pose6 = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
@@ -39,10 +52,36 @@ PACKAGE_MODELS = os.path.normpath(os.path.join(os.path.dirname(__file__), "..", 
 # Gazebo's defaults when a world says nothing.
 DEFAULT_STEP_SIZE = 0.001
 DEFAULT_GRAVITY = (0.0, 0.0, -9.8)
+# The deepest nesting of <include>s followed. The model library's deepest is 1 (a world
+# including a model); sdformat has no limit and recurses until Python's stack runs out
+# (a RecursionError that killed the simulator at start), so a limit far above any real
+# world, and far below the stack, refuses a runaway generator with a message instead.
+MAX_INCLUDE_DEPTH = 16
 
 
 class SdfError(ValueError):
     """A world or model that cannot be loaded; the message names the file and the cause."""
+
+
+def _checked(check, values, what: str, source: str) -> Tuple[float, ...]:
+    """urdf_tools' ``check`` (finite, positive) of ``values``, its refusal as SdfError."""
+    try:
+        return check(values, what, source)
+    except UrdfError as error:
+        raise SdfError(str(error)) from None
+
+
+def _check_size(size: int, source: str) -> None:
+    """Refuses a description over urdf_tools' limit before it is parsed."""
+    if size > MAX_DESCRIPTION_BYTES:
+        raise SdfError(f"{source}: the SDF is {size} bytes; sim_bridge reads at most "
+                       f"{MAX_DESCRIPTION_BYTES} (urdf_tools' MAX_DESCRIPTION_BYTES, 10 MiB, "
+                       "as for URDF): a description this big is a generator gone wrong or "
+                       "meshes inlined")
+
+
+# The models being included, outermost first: (URI as written, file it resolved to).
+Chain = Tuple[Tuple[str, str], ...]
 
 
 Warn = Callable[[str], None]
@@ -175,7 +214,11 @@ def _numbers(text: Optional[str], count: int, what: str, source: str) -> Tuple[f
         raise SdfError(f"{source}: {what} '{text}' is not {count} numbers") from None
     if len(values) != count:
         raise SdfError(f"{source}: {what} '{text}' is not {count} numbers")
-    return values
+    try:
+        return _urdf_finite(values, what, source)
+    except UrdfError:  # urdf_tools' words, with the text as written ('1e999', not 'inf')
+        raise SdfError(f"{source}: {what} '{' '.join(parts)}' is not {count} finite "
+                       f"number{'s' if count > 1 else ''}") from None
 
 
 def _child_number(element: ET.Element, tag: str, default: float, what: str, source: str) -> float:
@@ -218,14 +261,20 @@ def _shape(element: ET.Element, what: str, source: str, model_dir: str) -> Shape
     pose = _pose(element, what, source)
     kind = shape.tag
     if kind == "box":
-        size = _numbers(shape.findtext("size"), 3, f"{what} box <size>", source)
+        size = _checked(_urdf_positive,
+                        _numbers(shape.findtext("size"), 3, f"{what} box <size>", source),
+                        f"{what} box size", source)
         spec = ShapeSpec("box", pose, size=size)  # type: ignore[arg-type]
     elif kind == "cylinder":
-        spec = ShapeSpec("cylinder", pose,
-                         radius=_child_number(shape, "radius", 0.5, what, source),
-                         length=_child_number(shape, "length", 1.0, what, source))
+        radius, length = _checked(_urdf_positive,
+                                  [_child_number(shape, "radius", 0.5, what, source),
+                                   _child_number(shape, "length", 1.0, what, source)],
+                                  f"{what} cylinder radius and length", source)
+        spec = ShapeSpec("cylinder", pose, radius=radius, length=length)
     elif kind == "sphere":
-        spec = ShapeSpec("sphere", pose, radius=_child_number(shape, "radius", 0.5, what, source))
+        (radius,) = _checked(_urdf_positive, [_child_number(shape, "radius", 0.5, what, source)],
+                             f"{what} sphere radius", source)
+        spec = ShapeSpec("sphere", pose, radius=radius)
     elif kind == "plane":
         normal = _numbers(shape.findtext("normal") or "0 0 1", 3, f"{what} plane <normal>", source)
         size = _numbers(shape.findtext("size") or "100 100", 2, f"{what} plane <size>", source)
@@ -316,6 +365,9 @@ def _link(element: ET.Element, model: str, source: str, model_dir: str,
     inertial = element.find("inertial")
     if inertial is not None:
         link.mass = _child_number(inertial, "mass", 1.0, f"{what} inertial", source)
+        if link.mass < 0:  # urdf_tools' refusal, in its words
+            raise SdfError(f"{source}: {what} has a negative mass ({link.mass:g} kg); a mass "
+                           "must be positive")
         link.inertial_pose = _pose(inertial, f"{what} inertial", source)
         tensor = inertial.find("inertia")
         if tensor is not None:
@@ -344,7 +396,8 @@ def _replace_collisions(link: LinkSpec, failed: List[Tuple[str, _UnreadableMesh]
                      f"{source}: {label}: mesh '{mesh.uri}' {mesh.reason}; {done}")
 
 
-def _model(element: ET.Element, source: str, model_dir: str, warnings: _Warnings) -> ModelSpec:
+def _model(element: ET.Element, source: str, model_dir: str, warnings: _Warnings,
+           chain: Chain = ()) -> ModelSpec:
     name = element.get("name")
     if not name:
         raise SdfError(f"{source}: a <model> has no name")
@@ -353,7 +406,7 @@ def _model(element: ET.Element, source: str, model_dir: str, warnings: _Warnings
     for link in element.findall("link"):
         model.links.append(_link(link, name, source, model_dir, warnings))
     for nested in element.findall("include"):
-        inner = _include(nested, source, warnings)
+        inner = _include(nested, source, warnings, chain)
         if inner is not None:
             model.links.extend(_offset_links(inner))
     if element.find("joint") is not None and not static:
@@ -376,14 +429,14 @@ def load_model_file(path: str, warn: Optional[Warn] = None) -> Optional[ModelSpe
     return model
 
 
-def _load_model_file(path: str, warnings: _Warnings) -> Optional[ModelSpec]:
+def _load_model_file(path: str, warnings: _Warnings, chain: Chain = ()) -> Optional[ModelSpec]:
     root = _parse(path)
     element = root if root.tag == "model" else root.find("model")
     if element is None:
         if root.find("light") is not None or root.tag == "light":
             return None
         raise SdfError(f"{path}: no <model> in it")
-    return _model(element, path, os.path.dirname(path), warnings)
+    return _model(element, path, os.path.dirname(path), warnings, chain)
 
 
 def parse_model(text: str, source: str = "<sdf>", warn: Optional[Warn] = None) -> ModelSpec:
@@ -396,6 +449,9 @@ def parse_model(text: str, source: str = "<sdf>", warn: Optional[Warn] = None) -
 
 
 def _parse_model(text: str, source: str, warnings: _Warnings) -> ModelSpec:
+    # a text longer in characters than the limit is longer in bytes: no need to encode it
+    _check_size(len(text) if len(text) > MAX_DESCRIPTION_BYTES else len(text.encode("utf-8")),
+                source)
     try:
         root = ET.fromstring(text)
     except ET.ParseError as error:
@@ -411,11 +467,26 @@ def _parse_model(text: str, source: str, warnings: _Warnings) -> ModelSpec:
     return _model(element, source, os.getcwd(), warnings)
 
 
-def _include(element: ET.Element, source: str, warnings: _Warnings) -> Optional[ModelSpec]:
+def _include(element: ET.Element, source: str, warnings: _Warnings,
+             chain: Chain = ()) -> Optional[ModelSpec]:
+    """The model an ``<include>`` names; ``chain``: the includes being followed around it
+    (see :data:`MAX_INCLUDE_DEPTH`)."""
     uri = (element.findtext("uri") or "").strip()
     if not uri:
         raise SdfError(f"{source}: an <include> has no <uri>")
-    model = _load_model_file(resolve_model_uri(uri, source), warnings)
+    path = resolve_model_uri(uri, source)
+    real = os.path.realpath(path)
+    files = [file for _, file in chain]
+    if real in files:
+        cycle = [u for u, _ in chain[files.index(real):]] + [uri]
+        raise SdfError(f"{source}: <include> of '{uri}' includes itself again: "
+                       f"{' -> '.join(cycle)} ({real}); an include cycle never ends "
+                       "(remove the <include> that closes it)")
+    if len(chain) >= MAX_INCLUDE_DEPTH:
+        raise SdfError(f"{source}: <include> of '{uri}' is nested {len(chain) + 1} deep "
+                       f"({' -> '.join([u for u, _ in chain] + [uri])}); sim_bridge follows "
+                       f"at most {MAX_INCLUDE_DEPTH} (MAX_INCLUDE_DEPTH)")
+    model = _load_model_file(path, warnings, chain + ((uri, real),))
     if model is None:
         return None
     if element.find("name") is not None:
@@ -429,6 +500,7 @@ def _include(element: ET.Element, source: str, warnings: _Warnings) -> Optional[
 
 def _parse(path: str) -> ET.Element:
     try:
+        _check_size(os.path.getsize(path), path)  # before reading a file of any size
         return ET.parse(path).getroot()
     except ET.ParseError as error:
         raise SdfError(f"{path}: not well-formed XML: {error}") from None

@@ -152,9 +152,19 @@ class PhysicsProperties:
     ode: Dict[str, Any]
 
 
+# The largest coordinate pybullet's transform functions carry: they compute in single
+# precision, so a position of 1e300 sent to set_model_state came back (inf, nan, nan).
+MAX_COORDINATE = float(np.finfo(np.float32).max)
+
+
 def _finite(values: Sequence[float], what: str) -> None:
-    if not all(math.isfinite(v) for v in values):
-        raise SimError(f"{what} {tuple(values)} is not finite")
+    """Refuses numbers that are not finite or beyond MAX_COORDINATE, naming them as given."""
+    given = tuple(float(v) for v in values)
+    if not all(math.isfinite(v) for v in given):
+        raise SimError(f"{what} {given} is not finite")
+    if any(abs(v) > MAX_COORDINATE for v in given):
+        raise SimError(f"{what} {given} is beyond +-{MAX_COORDINATE:.3g}, the largest number "
+                       "pybullet's transforms carry (single precision)")
 
 
 def _checked_state(position: Sequence[float], orientation: Sequence[float],
@@ -679,6 +689,22 @@ class World:
                     f"{self._scoped(model, model.structure.bodies)})")
         return (f"there is no link named '{name}' (name a link as model::link; models: "
                 f"{', '.join(self.models) or 'none'})")
+
+    def state_in_world(self, reference_frame: str, position: Sequence[float],
+                       orientation: Sequence[float], linear: Sequence[float],
+                       angular: Sequence[float]) -> Tuple[Vec3, Quat, np.ndarray, np.ndarray]:
+        """A state requested in ``reference_frame`` (set_model_state's: pose in the frame,
+        twist in its axes) in the world, once every number is checked as it was sent: a
+        value that is not finite, or beyond MAX_COORDINATE, is refused naming it (turned
+        by pybullet first, 1e300 became (inf, nan, nan)). Turned in double precision."""
+        orientation = _checked_state(position, orientation, linear, angular)
+        frame_position, frame_orientation = self.frame_state(reference_frame)[:2]
+        frame = pose_matrix(frame_position, frame_orientation)
+        placed = frame @ pose_matrix(position, orientation)
+        rotation = frame[:3, :3]
+        return (tuple(float(v) for v in placed[:3, 3]),
+                quaternion_from_rpy(*matrix_rpy(placed[:3, :3])),
+                rotation @ np.asarray(linear, float), rotation @ np.asarray(angular, float))
 
     def frame_state(self, name: str) -> Tuple[Vec3, Quat, np.ndarray, np.ndarray]:
         """Pose and twist (world axes; the velocity of the frame's origin) of a reference
