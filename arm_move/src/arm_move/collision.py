@@ -141,6 +141,21 @@ class Scene:
                 return name
         return None
 
+    def placement_conflict(self, box: Box, tolerance: float) -> Optional[str]:
+        """What ``box`` placed in the scene would be sunk in: "floor" when any part of it is
+        below the floor, else the first other box it overlaps (by name), else None. A box
+        may touch what it rests on, and sink into it by up to ``tolerance`` (m)."""
+        lowest = box.center[2] - float(np.abs(box.rotation[2, :]) @ (box.size / 2))
+        if lowest < self.floor_z - tolerance:
+            return "floor"
+        half = np.maximum(box.size / 2 - tolerance, 0.0)
+        for other in self.boxes.values():
+            if other.name != box.name and boxes_overlap(
+                    box.center[None], box.rotation, half, other.center[None], other.rotation,
+                    other.size / 2)[0]:
+                return other.name
+        return None
+
     def _touches(self, centres: np.ndarray, radii: np.ndarray, fingers=None):
         """For a batch of sphere sets (m x n x 3): whether each touches the floor (m), and
         each box (one m-vector per box, in the order of ``stacked``). ``fingers`` (n bools):

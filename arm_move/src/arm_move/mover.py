@@ -11,7 +11,9 @@ real driver provide them) and only then offers its services:
 
 - ``reset`` (arm_move/Reset): places the RealSense box (planning scene, and the simulation
   when ``/gazebo/set_model_state`` answers), then moves the arm to Home around it, gripper
-  open; ``clear_waypoints`` forgets the list.
+  open; ``clear_waypoints`` forgets the list. A box pose inside the table or another
+  scene object (GOAL_IN_COLLISION) or reaching below the floor (INVALID_GOAL_CONSTRAINTS)
+  is refused naming the pose and what it is in; nothing moves.
 - ``step`` (arm_move/Step): plans the gripper point to a position, moves, then opens or
   closes the gripper; only when all of that succeeded is ``[x, y, z, gripper_open]``
   appended to ``~waypoints``. A planning failure moves nothing; a failed execution
@@ -236,6 +238,7 @@ class Mover:
                 trial.add(other)
         if self.scene.attached is not None:  # reset opens the gripper: it lets go
             trial.add(self._held_box(arm))
+        self._check_placement(box, trial, pose)
         trial.add(box)
         plan = self.planner.plan_to_joints(arm, self.k.finger_max, self.k.named_poses["home"],
                                            trial)
@@ -252,6 +255,26 @@ class Mover:
             rospy.set_param("~waypoints", [])
         return Codes.SUCCESS, (f"reset: box at {position.round(3).tolist()}, arm at Home"
                                f"{', waypoints cleared' if request.clear_waypoints else ''}")
+
+    def _check_placement(self, box: Box, scene, pose) -> None:
+        """Refuses a box pose below the floor or inside an obstacle of ``scene`` (the table,
+        the block): the planner would believe it there while physics threw the simulated
+        box out onto the floor. Resting on the table is fine (it may sink in by the held
+        object's contact tolerance, as a set-down block may)."""
+        hit = scene.placement_conflict(box, self.planner.model.contact_tolerance)
+        if hit is None:
+            return
+        o = pose.orientation
+        where = (f"box pose (position {np.round(box.center, 4).tolist()}, orientation "
+                 f"{np.round([o.x, o.y, o.z, o.w], 4).tolist()})")
+        if hit == "floor":
+            raise Outcome(Codes.INVALID_GOAL_CONSTRAINTS,
+                          f"reset: the {where} reaches below the floor (z "
+                          f"{scene.floor_z:g} in {self.settings.planning_frame}); the box was "
+                          "not moved, nothing moved")
+        raise Outcome(Codes.GOAL_IN_COLLISION,
+                      f"reset: the {where} is inside the {hit}; the box was not moved, "
+                      "nothing moved")
 
     def _place_in_simulation(self, position, orientation) -> None:
         """Moves the simulated box too, when a simulator answers (not on the fake or the
