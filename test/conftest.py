@@ -1,5 +1,6 @@
 """Fixtures shared by the workspace-level tests: paths, a private master, a virtual screen."""
 import os
+import subprocess
 import sys
 
 import pytest
@@ -36,3 +37,19 @@ def screen_env(ros_env):
     with headless.virtual_display() as display:
         env = dict(ros_env, DISPLAY=display, LIBGL_ALWAYS_SOFTWARE="1")
         yield env
+
+
+@pytest.fixture
+def master(ros_env):
+    """ros_env with a roscore running on its port (for nodes started by hand)."""
+    port = ros_env["ROS_MASTER_URI"].rsplit(":", 1)[1]
+    core = subprocess.Popen(["roscore", "-p", port], env=ros_env, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.STDOUT, start_new_session=True)
+    try:
+        headless.wait_until(lambda: subprocess.run(["rosnode", "list"], env=ros_env,
+                                                   capture_output=True, check=False).returncode == 0,
+                            30, "the master")
+        yield ros_env
+    finally:
+        core.terminate()
+        core.wait(timeout=20)

@@ -4,23 +4,6 @@ import subprocess
 
 import pytest
 
-import headless
-
-
-@pytest.fixture
-def master(ros_env):
-    port = ros_env["ROS_MASTER_URI"].rsplit(":", 1)[1]
-    core = subprocess.Popen(["roscore", "-p", port], env=ros_env, stdout=subprocess.DEVNULL,
-                            stderr=subprocess.STDOUT, start_new_session=True)
-    try:
-        headless.wait_until(lambda: subprocess.run(["rosnode", "list"], env=ros_env,
-                                                   capture_output=True, check=False).returncode == 0,
-                            30, "the master")
-        yield ros_env
-    finally:
-        core.terminate()
-        core.wait(timeout=20)
-
 
 def rosrun(env, *arguments):
     return subprocess.run(["rosrun", *arguments], env=env, capture_output=True, text=True,

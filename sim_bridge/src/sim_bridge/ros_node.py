@@ -45,6 +45,7 @@ from gazebo_msgs.msg import LinkStates, ModelStates
 from sim_bridge.plugins.base import Bus, PluginError
 from sim_bridge.poses import quaternion_matrix
 from sim_bridge.sdf_world import SdfError, load_world, parse_model
+from sim_bridge.stop_signals import StopSignals
 from gazebo_msgs.srv import (ApplyBodyWrench, ApplyBodyWrenchResponse, ApplyJointEffort,
                             ApplyJointEffortResponse, BodyRequest, BodyRequestResponse,
                             DeleteModel, DeleteModelResponse, GetLinkState,
@@ -61,6 +62,8 @@ from urdf_tools.model import UrdfError
 
 # How long a service waits for the physics thread to take its request (wall seconds).
 REQUEST_TIMEOUT = 30.0
+# What a request gets once the simulator has been told to stop.
+STOPPING = "the simulator is shutting down"
 # While paused, /clock is repeated this often (wall seconds) for late subscribers.
 PAUSED_CLOCK_PERIOD = 0.1
 
@@ -96,13 +99,17 @@ class Config:
 
 class PhysicsThread:
     """Work for the physics thread, handed over from rospy's threads. The physics loop calls
-    ``serve()`` between steps; ``call`` waits for the result, ``post`` does not."""
+    ``serve()`` between steps; ``call`` waits for the result, ``post`` does not. Once the
+    loop has ended, ``close()`` answers what is still queued, and every later request, with
+    an error instead of leaving the caller waiting."""
 
     def __init__(self):
         self.jobs: "queue.Queue" = queue.Queue()
+        self.closed = False
 
     def post(self, work: Callable[[], Any]) -> None:
-        self.jobs.put(work)
+        if not self.closed:
+            self.jobs.put(work)
 
     def call(self, work: Callable[[], Any]) -> Any:
         done = threading.Event()
@@ -110,12 +117,16 @@ class PhysicsThread:
 
         def job():
             try:
+                if self.closed:
+                    raise SimError(STOPPING)
                 box["result"] = work()
             except Exception as error:  # handed back to the calling thread
                 box["error"] = error
             finally:
                 done.set()
 
+        if self.closed:
+            raise SimError(STOPPING)
         self.jobs.put(job)
         if not done.wait(REQUEST_TIMEOUT):
             raise SimError(f"the simulator did not take the request within "
@@ -133,6 +144,12 @@ class PhysicsThread:
             except queue.Empty:
                 return
             job()
+
+    def close(self) -> None:
+        """No more work: what is queued is answered with an error (``call``'s jobs check
+        ``closed``; ``post``'s are dropped)."""
+        self.closed = True
+        self.serve()
 
 
 class RosBus(Bus):
@@ -532,10 +549,11 @@ class SimBridgeNode:
         elif ahead < -0.5:  # far behind (a slow spell): do not race to catch up
             self._pace_anchor = None
 
-    def run(self) -> None:
+    def run(self, stop: StopSignals) -> None:
+        """Steps and publishes until rospy shuts down or ``stop`` is requested."""
         self._publish_clock()
         last_paused_clock = 0.0
-        while not rospy.is_shutdown():
+        while not rospy.is_shutdown() and not stop.requested:
             self.physics.serve()
             if self.world.paused:
                 now = time.monotonic()
@@ -577,7 +595,9 @@ def build_world(config: Config, bus: Bus) -> World:
 def main(overrides: Optional[Dict[str, Any]] = None, log_level: int = rospy.INFO) -> None:
     """The simulator node; ``overrides`` take precedence over its parameters (gazebo_ros's
     gzserver passes what its command line says)."""
-    rospy.init_node("gazebo", log_level=log_level)
+    # rospy's signal handling off: see sim_bridge.stop_signals
+    rospy.init_node("gazebo", log_level=log_level, disable_signals=True)
+    stop = StopSignals().install()
     physics = PhysicsThread()
     try:
         config = Config.from_parameters(overrides)
@@ -594,6 +614,8 @@ def main(overrides: Optional[Dict[str, Any]] = None, log_level: int = rospy.INFO
     rospy.loginfo(f"sim_bridge ready (real_time_factor {config.real_time_factor:g}, "
                   f"{'paused' if world.paused else 'running'})")
     try:
-        node.run()
+        node.run(stop)
     finally:
+        physics.close()
+        rospy.signal_shutdown(stop.reason or "the simulator stopped")
         world.close()

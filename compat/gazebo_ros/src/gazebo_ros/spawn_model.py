@@ -22,7 +22,6 @@ from __future__ import annotations
 
 import argparse
 import re
-import signal
 import sys
 import time
 from typing import List, Optional
@@ -35,6 +34,7 @@ from tf.transformations import quaternion_from_euler
 
 from gazebo_msgs.srv import (DeleteModel, GetWorldProperties, SetModelConfiguration,
                              SpawnModel)
+from sim_bridge.stop_signals import StopSignals
 
 # What -database spawns: the model of that name from the model path, as upstream.
 DATABASE_TEMPLATE = """<sdf version="1.4">
@@ -172,26 +172,13 @@ def spawn(args: argparse.Namespace) -> None:
         rospy.ServiceProxy(f"{namespace}/unpause_physics", Empty)()
 
 
-class Stop(Exception):
-    """SIGINT or SIGTERM while spawn_model -b stays."""
-
-
-def _stop(_signal_number, _frame):
-    raise Stop()
-
-
 def stay_then_delete(args: argparse.Namespace) -> None:
     """-b: stay until Ctrl-C (or SIGTERM, as roslaunch sends), then delete the model. rospy's
-    own signal handling is off for -b, so that the node is still up to make that call: a
-    call from rospy's shutdown hook, inside the signal handler, could wait on a lock the
-    interrupted main thread held, and hung now and then."""
-    signal.signal(signal.SIGINT, _stop)
-    signal.signal(signal.SIGTERM, _stop)
-    try:
-        while not rospy.is_shutdown():
-            time.sleep(POLL_PERIOD)
-    except Stop:
-        pass
+    own signal handling is off for -b (sim_bridge.stop_signals says why), so that the node
+    is still up to make that call."""
+    stop = StopSignals().install()
+    while not rospy.is_shutdown() and not stop.requested:
+        time.sleep(POLL_PERIOD)
     try:
         rospy.ServiceProxy(f"{args.gazebo_namespace.rstrip('/')}/delete_model",
                            DeleteModel)(args.model)
