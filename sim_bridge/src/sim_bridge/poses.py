@@ -1,11 +1,13 @@
 """Pose arithmetic for the simulator: quaternions (x, y, z, w, as ROS and pybullet order
-them), roll-pitch-yaw, and 6-number SDF poses. No pybullet, no rospy."""
+them), roll-pitch-yaw, and 6-number SDF poses, on tf.transformations. No pybullet, no rospy."""
 from __future__ import annotations
 
 import math
 from typing import Sequence, Tuple
 
 import numpy as np
+from tf import transformations
+from tf.transformations import euler_from_quaternion, quaternion_from_euler
 
 from urdf_tools.kinematics import matrix_rpy, rpy_matrix
 
@@ -14,31 +16,20 @@ Quat = Tuple[float, float, float, float]
 
 
 def quaternion_from_rpy(roll: float, pitch: float, yaw: float) -> Quat:
-    cr, sr = math.cos(roll / 2), math.sin(roll / 2)
-    cp, sp = math.cos(pitch / 2), math.sin(pitch / 2)
-    cy, sy = math.cos(yaw / 2), math.sin(yaw / 2)
-    return (sr * cp * cy - cr * sp * sy,
-            cr * sp * cy + sr * cp * sy,
-            cr * cp * sy - sr * sp * cy,
-            cr * cp * cy + sr * sp * sy)
+    return tuple(float(c) for c in quaternion_from_euler(roll, pitch, yaw))  # type: ignore[return-value]
 
 
 def quaternion_matrix(q: Sequence[float]) -> np.ndarray:
-    x, y, z, w = q
-    return np.array([
-        [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-        [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-        [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
-    ])
+    """The 3x3 rotation of a unit quaternion (x, y, z, w)."""
+    return transformations.quaternion_matrix(q)[:3, :3]
 
 
 def rpy_from_quaternion(q: Sequence[float]) -> Vec3:
-    return matrix_rpy(quaternion_matrix(q))
+    return euler_from_quaternion(q)
 
 
 def yaw_from_quaternion(q: Sequence[float]) -> float:
-    x, y, z, w = q
-    return math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
+    return euler_from_quaternion(q)[2]
 
 
 def normalized(q: Sequence[float]) -> Quat:

@@ -6,39 +6,27 @@ planner uses it as forward kinematics.
 """
 from __future__ import annotations
 
-import math
 from typing import Mapping, Optional, Sequence, Tuple
 
 import numpy as np
+from tf.transformations import euler_from_matrix, euler_matrix, rotation_matrix
 
 from urdf_tools.model import Joint, Origin, RobotModel
 
 
 def rpy_matrix(roll: float, pitch: float, yaw: float) -> np.ndarray:
     """Rotation of URDF's fixed-axis roll-pitch-yaw: R = Rz(yaw) Ry(pitch) Rx(roll)."""
-    cr, sr = math.cos(roll), math.sin(roll)
-    cp, sp = math.cos(pitch), math.sin(pitch)
-    cy, sy = math.cos(yaw), math.sin(yaw)
-    return np.array([
-        [cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
-        [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
-        [-sp, cp * sr, cp * cr],
-    ])
+    return euler_matrix(roll, pitch, yaw)[:3, :3]
 
 
 def matrix_rpy(rotation: np.ndarray) -> Tuple[float, float, float]:
     """Roll, pitch, yaw of a rotation matrix (inverse of :func:`rpy_matrix`)."""
-    pitch = math.asin(max(-1.0, min(1.0, -rotation[2, 0])))
-    roll = math.atan2(rotation[2, 1], rotation[2, 2])
-    yaw = math.atan2(rotation[1, 0], rotation[0, 0])
-    return roll, pitch, yaw
+    return euler_from_matrix(rotation)
 
 
 def axis_angle_matrix(axis: Sequence[float], angle: float) -> np.ndarray:
-    """Rotation by ``angle`` about the unit vector ``axis`` (Rodrigues' formula)."""
-    x, y, z = np.asarray(axis, dtype=float) / np.linalg.norm(axis)
-    k = np.array([[0, -z, y], [z, 0, -x], [-y, x, 0]])
-    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * (k @ k)
+    """Rotation by ``angle`` about ``axis`` (any length but zero)."""
+    return rotation_matrix(angle, axis)[:3, :3]
 
 
 def origin_transform(origin: Origin) -> np.ndarray:
