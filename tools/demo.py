@@ -29,8 +29,9 @@ def real_screen() -> bool:
 
 
 def true_yaw_degrees(get_state) -> float:
+    from tf.transformations import euler_from_quaternion  # ROS's, once the workspace is set up
     q = get_state("my_rb1", "").pose.orientation
-    return math.degrees(math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z)))
+    return math.degrees(euler_from_quaternion((q.x, q.y, q.z, q.w))[2])
 
 
 def main() -> int:

@@ -8,20 +8,12 @@ import rospy
 import rostest
 import tf2_ros
 from sensor_msgs.msg import JointState
+from tf.transformations import quaternion_matrix
 
 from urdf_tools.kinematics import axis_angle_matrix, link_transform
 from urdf_tools.model import parse_urdf
 
 TIMEOUT = rospy.Duration(10.0)
-
-
-def quaternion_matrix(q):
-    x, y, z, w = q.x, q.y, q.z, q.w
-    return np.array([
-        [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-        [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-        [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
-    ])
 
 
 class DisplayTf(unittest.TestCase):
@@ -37,7 +29,8 @@ class DisplayTf(unittest.TestCase):
         stamped = self.buffer.lookup_transform("base_footprint", child, rospy.Time(0), TIMEOUT)
         t = stamped.transform
         return (np.array([t.translation.x, t.translation.y, t.translation.z]),
-                quaternion_matrix(t.rotation))
+                quaternion_matrix((t.rotation.x, t.rotation.y, t.rotation.z,
+                                   t.rotation.w))[:3, :3])
 
     def test_every_frame_is_where_the_urdf_puts_it(self):
         for link in self.model.links:
