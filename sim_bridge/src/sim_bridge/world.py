@@ -34,7 +34,9 @@ from sim_bridge.plugins import create_plugins
 from sim_bridge.plugins.base import Bus, Plugin, PluginContext
 from sim_bridge.poses import (compose6, normalized, pose6_matrix, pose6_to_position_quaternion,
                               quaternion_from_rpy, quaternion_matrix)
+from sim_bridge import ray_kernel
 from sim_bridge.ray_caster import Primitive, ShapeSet, cast, primitive_for
+from sim_bridge.ray_scene import RayScene
 from sim_bridge.robot_body import RobotBody
 from sim_bridge.sdf_world import ModelSpec, ShapeSpec, WorldSpec
 from sim_bridge.tyre_friction import TyreFriction
@@ -219,6 +221,8 @@ class World:
         self._static_shapes: Optional[ShapeSet] = None
         self._plugins: Optional[List[Plugin]] = None  # what step() calls
         self._has_meshes: Optional[bool] = None
+        # what lasers see (sim_bridge.ray_scene), rebuilt after the scene changes
+        self._ray_scene: Optional[RayScene] = None
         self._weightless: List[RobotBody] = []
         self._frictions: List[TyreFriction] = []
         # (body, link) of every robot's tyres (sim_bridge.tyre_friction)
@@ -347,6 +351,7 @@ class World:
         self._plugins = None
         self._static_shapes = None
         self._has_meshes = None
+        self._ray_scene = None
 
     def _shape_arguments(self, shape: ShapeSpec, collision: bool) -> dict:
         arguments: dict = {}
@@ -609,6 +614,7 @@ class World:
                   linear: Sequence[float] = (0, 0, 0), angular: Sequence[float] = (0, 0, 0)) -> None:
         model = self.model(name)
         orientation = _checked_state(position, orientation, linear, angular)
+        self._poses_moved()
         if model.kind == "static":
             model.position, model.orientation = tuple(position), orientation
             roll_pitch_yaw = pb.getEulerFromQuaternion(list(orientation))
@@ -641,6 +647,7 @@ class World:
             if not math.isfinite(value):
                 raise SimError(f"joint '{joint}': position {value} is not finite")
         model.robot.reset_joints(positions)
+        self._poses_moved()
         model.initial_joints.update(positions)
         for plugin in model.plugins:
             plugin.reset(self.now_ns)
@@ -892,6 +899,7 @@ class World:
 
     def reset(self) -> None:
         """Every model back where it was spawned, at rest; time goes on (never backwards)."""
+        self._poses_moved()
         for model in self.models.values():
             if model.kind == "static":
                 continue
@@ -930,28 +938,55 @@ class World:
 
     # --- ray casting (lasers) -------------------------------------------------------------
     def cast_rays(self, origin: Sequence[float], directions: np.ndarray, near: float,
-                  far: float) -> np.ndarray:
+                  far: float, reference: bool = False) -> np.ndarray:
         """Distances from ``origin`` along unit ``directions`` to the first surface between
         ``near`` and ``far`` (inf where there is none). Analytic against the scene's
-        primitive shapes; through pybullet when a mesh is in the scene."""
+        primitive shapes (:mod:`sim_bridge.ray_scene`: the compiled kernel, moving shapes
+        placed once per time stamp); through pybullet when a mesh is in the scene.
+        ``reference``: the numpy reference, every shape placed anew (what tests check the
+        fast path against)."""
         origin = np.asarray(origin, dtype=float)
-        starts = origin + directions * near
+        directions = np.asarray(directions, dtype=float)
         if self._has_meshes is None:
             self._has_meshes = any(m.has_mesh for m in self.models.values())
         if self._has_meshes:
+            starts = origin + directions * near
             ends = origin + directions * far
             results = pb.rayTestBatch(starts.tolist(), ends.tolist(),
                                       numThreads=self.ray_threads, physicsClientId=self.client)
             fractions = np.array([r[2] if r[0] >= 0 else np.inf for r in results])
             return near + fractions * (far - near)
+        if reference:
+            return self._cast_reference(origin, directions, near, far)
+        if self._ray_scene is None:
+            kernel, where = ray_kernel.load()
+            if kernel is None and not self._kernel_warned:
+                self._kernel_warned = True  # once, not at every change of the scene
+                self.bus.warn(f"lasers are cast by numpy, slower: {where}")
+            self._ray_scene = RayScene(self, kernel)
+        return self._ray_scene.cast(self.now_ns, origin, directions, near, far)
+
+    # set when the missing ray kernel has been warned about (per world)
+    _kernel_warned = False
+
+    def _poses_moved(self) -> None:
+        """Models were placed without time passing: lasers place their shapes again."""
+        if self._ray_scene is not None:
+            self._ray_scene.poses_changed()
+
+    def _cast_reference(self, origin: np.ndarray, directions: np.ndarray, near: float,
+                        far: float) -> np.ndarray:
+        """The numpy reference (ray_caster), every moving shape placed for this call."""
         if self._static_shapes is None:
             self._static_shapes = ShapeSet([p for m in self.models.values()
                                             if m.kind == "static" for p in m.primitives])
+        starts = origin + directions * near
         distances = near + cast([self._static_shapes, ShapeSet(self._moving_primitives())],
                                 starts, directions)
         return np.where(distances <= far, distances, np.inf)
 
     def _moving_primitives(self) -> List[Primitive]:
+        """Every moving shape placed where its body is now (the reference's way)."""
         primitives: List[Primitive] = []
         for model in self.models.values():
             if model.robot is not None:
