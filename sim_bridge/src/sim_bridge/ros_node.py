@@ -31,7 +31,7 @@ import subprocess
 import threading
 import time
 from dataclasses import dataclass
-from typing import Any, Callable, Dict, Optional
+from typing import Any, Callable, Dict, Optional, Tuple
 
 import numpy as np
 import pybullet as pb
@@ -44,6 +44,7 @@ from tf2_msgs.msg import TFMessage
 from gazebo_msgs.msg import LinkStates, ModelStates
 from sim_bridge.plugins.base import Bus, PluginError
 from sim_bridge.poses import quaternion_matrix
+from sim_bridge.ros_publishing import OwnClock, batch_queued_writes
 from sim_bridge.sdf_world import SdfError, load_world, parse_model
 from sim_bridge.stop_signals import StopSignals
 from gazebo_msgs.srv import (ApplyBodyWrench, ApplyBodyWrenchResponse, ApplyJointEffort,
@@ -264,9 +265,13 @@ class SimBridgeNode:
         self._pace_anchor = None
         self.model_states = None
         self.link_states = None
+        self.own_clock: Optional[OwnClock] = None
+        self._static_version = -1  # the world's scene_version the entries below are of
+        self._static_entries: Dict[str, Tuple[Pose, Twist]] = {}
 
     # --- set-up -------------------------------------------------------------------------
     def advertise_clock(self) -> None:
+        self.own_clock = OwnClock()
         self.clock = rospy.Publisher("/clock", Clock, queue_size=10)
 
     def advertise(self) -> None:
@@ -319,16 +324,9 @@ class SimBridgeNode:
                 raise rospy.ServiceException(f"{service}: {error}")
         return serve
 
-    def _relative_to(self, frame: str):
-        """(position, orientation) of a reference frame: the world ('', 'world', 'map'), a
-        model or a link (``model::link``)."""
-        return self.world.frame_state(frame)[:2]
-
     def _spawn(self, request, kind: str):
-        position, orientation = _pose_parts(request.initial_pose)
-        frame_position, frame_orientation = self._relative_to(request.reference_frame)
-        position, orientation = pb.multiplyTransforms(frame_position, frame_orientation,
-                                                      position, orientation)
+        position, orientation, _, _ = self.world.state_in_world(
+            request.reference_frame, *_pose_parts(request.initial_pose), (0, 0, 0), (0, 0, 0))
         if kind == "urdf":
             self.world.spawn_urdf(request.model_name, request.model_xml, position, orientation,
                                   request.robot_namespace, source=f"model '{request.model_name}'",
@@ -381,12 +379,8 @@ class SimBridgeNode:
         position, orientation = _pose_parts(state.pose)
         linear = (state.twist.linear.x, state.twist.linear.y, state.twist.linear.z)
         angular = (state.twist.angular.x, state.twist.angular.y, state.twist.angular.z)
-        frame_position, frame_orientation = self._relative_to(state.reference_frame)
-        position, orientation = pb.multiplyTransforms(frame_position, frame_orientation,
-                                                      position, orientation)
-        rotation = quaternion_matrix(frame_orientation)
-        self.world.set_state(state.model_name, position, orientation,
-                             rotation @ np.asarray(linear), rotation @ np.asarray(angular))
+        self.world.set_state(state.model_name, *self.world.state_in_world(
+            state.reference_frame, position, orientation, linear, angular))
         return SetModelStateResponse(True, "SetModelState: set model state done")
 
     def _set_configuration(self, request):
@@ -430,16 +424,10 @@ class SimBridgeNode:
         state = request.link_state
         ref = self.world.find_link(state.link_name)
         position, orientation = _pose_parts(state.pose)
-        linear, angular = np.asarray(_vector(state.twist.linear)), \
-            np.asarray(_vector(state.twist.angular))
-        if state.reference_frame not in WORLD_FRAMES:
-            # the pose and the twist are given in the frame's axes
-            frame_position, frame_orientation = self._relative_to(state.reference_frame)
-            position, orientation = pb.multiplyTransforms(frame_position, frame_orientation,
-                                                          position, orientation)
-            rotation = quaternion_matrix(frame_orientation)
-            linear, angular = rotation @ linear, rotation @ angular
-        self.world.set_link_state(ref, position, orientation, linear, angular)
+        # the pose and the twist are given in the reference frame's axes
+        self.world.set_link_state(ref, *self.world.state_in_world(
+            state.reference_frame, position, orientation, _vector(state.twist.linear),
+            _vector(state.twist.angular)))
         return SetLinkStateResponse(True, "SetLinkState: success")
 
     def _get_physics(self, _request):
@@ -511,7 +499,9 @@ class SimBridgeNode:
 
     # --- the loop -------------------------------------------------------------------------
     def _publish_clock(self) -> None:
-        self.clock.publish(Clock(clock=rospy.Time(nsecs=self.world.now_ns)))
+        now = rospy.Time(nsecs=self.world.now_ns)
+        self.own_clock.set(now)
+        self.clock.publish(Clock(clock=now))
 
     @staticmethod
     def _states_message(message_class, entries):
@@ -526,10 +516,27 @@ class SimBridgeNode:
             message.twist.append(twist)
         return message
 
+    def _pose_twist(self, name: str) -> Tuple[Pose, Twist]:
+        pose, twist = Pose(), Twist()
+        _fill_pose(pose, *self.world.pose(name))
+        _fill_twist(twist, *self.world.twist(name))
+        return pose, twist
+
     def _publish_model_states(self) -> None:
-        self.model_states.publish(self._states_message(
-            ModelStates, ((name, *self.world.pose(name), *self.world.twist(name))
-                          for name in self.world.models)))
+        """Static models' entries are built once per scene: they do not move, and 40 of
+        them cost ~0.4 ms a message to rebuild."""
+        if self._static_version != self.world.scene_version:
+            self._static_entries = {name: self._pose_twist(name)
+                                    for name, model in self.world.models.items()
+                                    if model.kind == "static"}
+            self._static_version = self.world.scene_version
+        message = ModelStates()
+        for name in self.world.models:
+            pose, twist = self._static_entries.get(name) or self._pose_twist(name)
+            message.name.append(name)
+            message.pose.append(pose)
+            message.twist.append(twist)
+        self.model_states.publish(message)
 
     def _publish_link_states(self) -> None:
         self.link_states.publish(self._states_message(LinkStates, self.world.link_states()))
@@ -597,6 +604,7 @@ def main(overrides: Optional[Dict[str, Any]] = None, log_level: int = rospy.INFO
     gzserver passes what its command line says)."""
     # rospy's signal handling off: see sim_bridge.stop_signals
     rospy.init_node("gazebo", log_level=log_level, disable_signals=True)
+    batch_queued_writes()  # see sim_bridge.ros_publishing
     stop = StopSignals().install()
     physics = PhysicsThread()
     try:

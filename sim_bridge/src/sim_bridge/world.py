@@ -223,6 +223,8 @@ class World:
         self._has_meshes: Optional[bool] = None
         # what lasers see (sim_bridge.ray_scene), rebuilt after the scene changes
         self._ray_scene: Optional[RayScene] = None
+        # counts the changes of the scene (models added, deleted, static ones moved)
+        self.scene_version = 0
         self._weightless: List[RobotBody] = []
         self._frictions: List[TyreFriction] = []
         # (body, link) of every robot's tyres (sim_bridge.tyre_friction)
@@ -348,6 +350,7 @@ class World:
 
     def _scene_changed(self) -> None:
         """Models came, went or moved: what is derived from them is rebuilt when next used."""
+        self.scene_version += 1
         self._plugins = None
         self._static_shapes = None
         self._has_meshes = None
