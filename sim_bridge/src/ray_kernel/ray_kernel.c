@@ -29,6 +29,9 @@
 #define SBR_PLANE 3
 /* a direction component smaller than this is parallel to a face (the reference's PARALLEL) */
 #define SBR_PARALLEL 1e-12
+/* a ray parallel to a face and this close outside its plane (m) touches it (the
+ * reference's TOUCH: the same answer whatever the rounding) */
+#define SBR_TOUCH 1e-9
 
 typedef struct {
     double lo;        /* |centre - origin| - bound: no hit of this shape is nearer */
@@ -48,7 +51,7 @@ static int by_lo(const void *a, const void *b) {
 /* Narrows [*t0, *t1] to where o + t d lies within |x| <= h along one axis; 0: empty. */
 static int slab(double o, double d, double h, double *t0, double *t1) {
     if (fabs(d) < SBR_PARALLEL) {
-        return fabs(o) <= h;
+        return fabs(o) <= h + SBR_TOUCH;
     }
     double inv = 1.0 / d;
     double a = (-h - o) * inv, b = (h - o) * inv;

@@ -19,6 +19,11 @@ import numpy as np
 KINDS = ("box", "cylinder", "sphere", "plane")
 # a direction component smaller than this is treated as parallel to a face
 PARALLEL = 1e-12
+# a ray parallel to a face and this close outside its plane (m) touches it: a level beam at
+# exactly a box's top (0.12 m up, the top at 0.1 + 0.04 / 2) lies a rounding error above or
+# below it depending on the order of operations; the margin makes the answer the same
+# whichever way it was worked out (the compiled kernel's too)
+TOUCH = 1e-9
 
 
 @dataclass
@@ -75,17 +80,24 @@ def _local(centres, rotations, origins, directions):
     # v_local[i] = sum_j v[j] R[j, i] (einsum: 2x faster than M tiny matmuls here)
     local_origins = np.einsum("mj,mji->mi", origins - centres, rotations)
     local_directions = np.einsum("mj,mji->mi", directions, rotations)
-    local_directions = np.where(np.abs(local_directions) < PARALLEL, PARALLEL, local_directions)
     return local_origins, local_directions
 
 
 def _boxes(o, d, dims):
     half = dims / 2.0
-    inverse = 1.0 / d
+    # A ray parallel to a pair of faces is between them all along, or never: dividing by a
+    # stand-in for its tiny direction component instead made a ray a rounding error inside
+    # a face's plane leave the slab at once (a level beam at exactly a box's top missed it,
+    # one at exactly its bottom hit it).
+    parallel = np.abs(d) < PARALLEL
+    inverse = 1.0 / np.where(parallel, 1.0, d)
+    within = np.abs(o) <= half + TOUCH
     t1 = (-half - o) * inverse
     t2 = (half - o) * inverse
-    near = np.minimum(t1, t2).max(axis=1)
-    far = np.maximum(t1, t2).min(axis=1)
+    enter = np.where(parallel, np.where(within, -np.inf, np.inf), np.minimum(t1, t2))
+    leave = np.where(parallel, np.where(within, np.inf, -np.inf), np.maximum(t1, t2))
+    near = enter.max(axis=1)
+    far = leave.min(axis=1)
     hit = (far >= near) & (far >= 0.0)
     return np.where(hit, np.maximum(near, 0.0), np.inf)
 
@@ -106,13 +118,14 @@ def _cylinders(o, d, dims):
     dx, dy, dz = d[:, 0], d[:, 1], d[:, 2]
     a = np.maximum(dx * dx + dy * dy, PARALLEL)
     side = _quadratic_entry(a, ox * dx + oy * dy, ox * ox + oy * oy - radius * radius)
-    best = np.where(np.abs(oz + side * dz) <= half, side, np.inf)
+    limit = half + np.where(np.abs(dz) < PARALLEL, TOUCH, 0.0)
+    best = np.where(np.abs(oz + side * dz) <= limit, side, np.inf)
     for cap in (-half, half):
         t = (cap - oz) / dz
         x, y = ox + t * dx, oy + t * dy
         best = np.minimum(best, np.where((t >= 0.0) & (x * x + y * y <= radius * radius),
                                          t, np.inf))
-    inside = (ox * ox + oy * oy <= radius * radius) & (np.abs(oz) <= half)
+    inside = (ox * ox + oy * oy <= radius * radius) & (np.abs(oz) <= limit)
     return np.where(inside, 0.0, best)
 
 
