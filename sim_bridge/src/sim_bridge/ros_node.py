@@ -60,6 +60,7 @@ from gazebo_msgs.srv import (ApplyBodyWrench, ApplyBodyWrenchResponse, ApplyJoin
                             SetPhysicsPropertiesResponse, SpawnModel, SpawnModelResponse)
 from sim_bridge.world import WORLD_FRAMES, SimError, World
 from urdf_tools.model import UrdfError
+from node_params import non_negative, parameter, positive, read, zero_or_at_least
 
 # How long a service waits for the physics thread to take its request (wall seconds).
 REQUEST_TIMEOUT = 30.0
@@ -75,31 +76,41 @@ PACE_BATCH = 0.01
 
 @dataclass
 class Config:
-    """The node's private parameters, read once (defaults in config/sim_bridge.yaml)."""
+    """The node's private parameters, read once (defaults and units in
+    config/sim_bridge.yaml)."""
 
-    world_name: str = ""
-    paused: bool = False
-    gui: bool = False
-    real_time_factor: float = 1.0
-    seed: int = 0
-    pub_clock_frequency: float = 250.0
-    model_states_frequency: float = 50.0
-    ray_threads: int = 0
+    # The slowest real time factor taken (besides 0): slower, one step's pacing sleep would
+    # outlast a stop request (Ctrl-C is acted on between steps), and a factor like 1e-300
+    # would ask time.sleep for more than it can wait. There is no highest: beyond what the
+    # machine reaches (1e9 says so), the loop steps as fast as it can, as with 0.
+    MIN_REAL_TIME_FACTOR = 0.001
+
+    world_name: str = parameter("", expected="an SDF world file (empty: no world)")
+    paused: bool = parameter(False, expected="true or false: start with physics paused")
+    gui: bool = parameter(False, expected="true or false: show pybullet's window")
+    real_time_factor: float = parameter(
+        1.0, zero_or_at_least(MIN_REAL_TIME_FACTOR),
+        expected=f"0 (as fast as it can) or a number of simulated seconds per wall second "
+                 f"of at least {MIN_REAL_TIME_FACTOR:g}")
+    seed: int = parameter(0, non_negative,
+                          expected="a whole number >= 0 seeding the simulated noise")
+    pub_clock_frequency: float = parameter(
+        250.0, positive, expected="a positive rate in Hz of simulated time for /clock")
+    model_states_frequency: float = parameter(
+        50.0, positive,
+        expected="a positive rate in Hz of simulated time for /gazebo/model_states")
+    ray_threads: int = parameter(
+        0, non_negative, expected="a whole number of threads for laser rays >= 0 (0: all cores)")
     # false: no /gazebo services or topics (gazebo_ros's enable_ros_network); /clock stays
-    enable_ros_network: bool = True
+    enable_ros_network: bool = parameter(
+        True, expected="true or false: offer the /gazebo services and topics")
 
     @classmethod
     def from_parameters(cls, overrides: Optional[Dict[str, Any]] = None) -> "Config":
         """Private parameters over the defaults, and ``overrides`` (the command line that
-        gzserver was given) over both."""
-        values = {name: rospy.get_param("~" + name, default)
-                  for name, default in cls().__dict__.items()}
-        values.update(overrides or {})
-        config = cls(**values)
-        if config.real_time_factor < 0 or not math.isfinite(config.real_time_factor):
-            raise ValueError(f"~real_time_factor must be 0 (as fast as possible) or positive, "
-                             f"not {config.real_time_factor}")
-        return config
+        gzserver was given; node_params.Given values name their option) over both.
+        ParameterError (a ValueError) names the parameter, the value and what is expected."""
+        return read(cls, rospy.get_param, "~", overrides)
 
 
 class PhysicsThread:

@@ -11,12 +11,19 @@ does and hands what it means to sim_bridge's node:
                           accepted; Gazebo's log recording is not emulated (one warning)
   -s, --server-plugin, -g, --gui-plugin PLUGIN
                           accepted: gazebo_ros's own plugins are what sim_bridge is
-  --seed N                seed of the simulated noise
+  --seed N                seed of the simulated noise (a whole number >= 0)
   WORLD                   the world file (relative names are looked up in the current folder,
                           then GAZEBO_RESOURCE_PATH, which includes this package's worlds)
 
 Other options are reported once and ignored; the last word that is not an option is the
 world, as for gzserver.
+
+Values are checked where sim_bridge reads its parameters (node_params): a bad ``--seed``
+is named as the option (``gzserver --seed: 'abc' is not a whole number; ...``), a bad
+private parameter as the parameter, and the simulator stops with that one line.
+empty_world.launch hands ``real_time_factor``, ``seed``, ``paused`` and ``gui`` over as
+private parameters (roslaunch leaves ``1e9``, ``nan`` and ``maybe`` as text; the reader
+converts or refuses them), so each is named as the user typed it.
 """
 from __future__ import annotations
 
@@ -28,6 +35,7 @@ from typing import Any, Dict, List, Optional, Tuple
 
 import rospkg
 import rospy
+from node_params import Given
 
 # Options that take a value and mean nothing here.
 IGNORED_WITH_VALUE = ("-s", "--server-plugin", "-g", "--gui-plugin", "--record_path",
@@ -42,7 +50,7 @@ def parse_command_line(argv: List[str]) -> Tuple[Dict[str, Any], int, List[str]]
     parser.add_argument("-u", "--pause", action="store_true")
     parser.add_argument("--verbose", action="store_true")
     parser.add_argument("-e", "--physics", default="ode")
-    parser.add_argument("--seed", type=int)
+    parser.add_argument("--seed")  # checked by sim_bridge's reader, named as the option
     parser.add_argument("-r", "--record", action="store_true")
     for flag in IGNORED_FLAGS:
         parser.add_argument(flag, action="store_true")
@@ -59,7 +67,7 @@ def parse_command_line(argv: List[str]) -> Tuple[Dict[str, Any], int, List[str]]
     if args.pause:
         overrides["paused"] = True
     if args.seed is not None:
-        overrides["seed"] = args.seed
+        overrides["seed"] = Given(args.seed, "gzserver --seed")
     if args.record or args.record_path:
         notes.append("recording a Gazebo log (-r) is not emulated; the run is not recorded")
     if args.physics not in ("ode", "bullet"):
