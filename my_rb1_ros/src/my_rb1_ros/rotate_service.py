@@ -18,12 +18,14 @@ failure that names them; the node goes on serving.
 from __future__ import annotations
 
 import math
+import sys
 import threading
 import time
 from dataclasses import dataclass
 from typing import Callable, Optional
 
 import rospy
+from node_params import ParameterError, at_least, non_negative, parameter, positive, read
 from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 from tf.transformations import euler_from_quaternion
@@ -40,30 +42,52 @@ GUARD_POLL = 0.05
 
 @dataclass
 class Config:
-    """Private parameters, read once; units in the names' comments of the yaml."""
+    """Private parameters, read once with node_params (units in config/rotate_service.yaml).
+    A value that cannot be used is a ParameterError naming it; the node then stops."""
 
-    max_angular_speed: float = 0.8
-    min_angular_speed: float = 0.05
-    gain: float = 1.5
-    tolerance_degrees: float = 0.3
-    control_rate: float = 50.0
-    odom_timeout: float = 5.0
-    stall_seconds: float = 2.0
-    stall_degrees: float = 2.0
-    settle_speed: float = 0.01
-    settle_seconds: float = 1.0
-    time_slack: float = 2.0
-    time_margin: float = 5.0
-    max_degrees: int = 3600
-    jump_angular_speed: float = 1.6
-    jump_linear_speed: float = 1.0
-    jump_degrees: float = 5.0
-    jump_distance: float = 0.05
+    max_angular_speed: float = parameter(0.8, positive, expected="the fastest turn, rad/s > 0")
+    min_angular_speed: float = parameter(
+        0.05, positive, expected="the slowest turn near the goal, rad/s > 0 and at most "
+                                 "~max_angular_speed")
+    gain: float = parameter(1.5, positive, expected="1/s > 0: speed = gain x remaining angle")
+    tolerance_degrees: float = parameter(0.3, positive,
+                                         expected="degrees > 0 left when a rotation is done")
+    control_rate: float = parameter(50.0, positive,
+                                    expected="the control loop's rate, Hz (simulated) > 0")
+    odom_timeout: float = parameter(
+        5.0, positive, expected="wall seconds > 0 without odometry or moving time that fail")
+    stall_seconds: float = parameter(
+        2.0, positive, expected="seconds > 0 of commanded turning without progress that fail")
+    stall_degrees: float = parameter(2.0, positive,
+                                     expected="degrees > 0 of progress that count as turning")
+    settle_speed: float = parameter(0.01, positive,
+                                    expected="rad/s > 0 below which the robot is still")
+    settle_seconds: float = parameter(
+        1.0, non_negative, expected="seconds >= 0 to wait for the robot to be still")
+    time_slack: float = parameter(
+        2.0, at_least(1.0), expected="a factor >= 1 on the time at full speed")
+    time_margin: float = parameter(5.0, non_negative,
+                                   expected="seconds >= 0 allowed on top of that time")
+    max_degrees: int = parameter(3600, positive,
+                                 expected="a whole number of degrees > 0, the largest request")
+    jump_angular_speed: float = parameter(
+        1.6, positive, expected="rad/s > 0, the fastest the robot really turns")
+    jump_linear_speed: float = parameter(
+        1.0, positive, expected="m/s > 0, the fastest the robot really drives")
+    jump_degrees: float = parameter(5.0, non_negative,
+                                    expected="degrees >= 0 allowed on top, per message")
+    jump_distance: float = parameter(0.05, non_negative,
+                                     expected="metres >= 0 allowed on top, per message")
+
+    def __post_init__(self):
+        if self.min_angular_speed > self.max_angular_speed:
+            raise ParameterError("~min_angular_speed", self.min_angular_speed,
+                                 f"is more than ~max_angular_speed ({self.max_angular_speed:g})",
+                                 "the slowest turn, at most the fastest")
 
     @classmethod
-    def from_parameters(cls) -> "Config":
-        return cls(**{name: type(default)(rospy.get_param("~" + name, default))
-                      for name, default in cls().__dict__.items()})
+    def from_parameters(cls, get_param: Callable = rospy.get_param) -> "Config":
+        return read(cls, get_param)
 
     @property
     def gains(self) -> RotationGains:
@@ -281,6 +305,11 @@ class RotateService:
 
 def main() -> None:
     rospy.init_node("rotate_service")
-    service = RotateService(Config.from_parameters())
+    try:
+        config = Config.from_parameters()
+    except ParameterError as error:
+        rospy.logfatal("rotate_service: %s", error)
+        sys.exit(1)
+    service = RotateService(config)
     service.start()
     rospy.spin()
