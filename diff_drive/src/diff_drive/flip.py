@@ -13,7 +13,7 @@ there (the body's up axis changing sign) in its log.
 """
 from __future__ import annotations
 
-import math
+import dataclasses
 import os
 import sys
 from dataclasses import dataclass, fields
@@ -24,31 +24,24 @@ import rospy
 import yaml
 from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
+from node_params import given_from, parameter, positive, read
 
 
 @dataclass(frozen=True)
 class FlipSettings:
-    """How the routine drives: speed (m/s), leg_time (s), rate (Hz)."""
+    """How the routine drives: speed (m/s), leg_time (s), rate (Hz). No defaults here:
+    they live in config/flip.yaml."""
 
-    speed: float
-    leg_time: float
-    rate: float
+    speed: float = parameter(dataclasses.MISSING, positive, expected="the wheels' ground speed, m/s > 0")
+    leg_time: float = parameter(dataclasses.MISSING, positive, expected="seconds > 0 (simulated) of each leg")
+    rate: float = parameter(dataclasses.MISSING, positive, expected="how often the command is published, Hz > 0")
 
     @classmethod
     def from_mapping(cls, values: Mapping[str, object], source: str) -> "FlipSettings":
-        """Settings from ``values``; ValueError naming ``source`` and the parameter when one
-        is missing or is not a positive finite number."""
-        read = {}
-        for field in fields(cls):
-            if field.name not in values:
-                raise ValueError(f"{source}: '{field.name}' is missing")
-            value = values[field.name]
-            if isinstance(value, bool) or not isinstance(value, (int, float)) \
-                    or not math.isfinite(value) or value <= 0:
-                raise ValueError(f"{source}: '{field.name}' must be a positive number "
-                                 f"(got {value!r})")
-            read[field.name] = float(value)
-        return cls(**read)
+        """Settings from ``values`` (names without ``~``); node_params.ParameterError (a
+        ValueError) naming ``source`` and the setting when one is missing or is not a
+        positive finite number."""
+        return read(cls, values, prefix=f"{source}: ")
 
 
 def load_defaults(path: str) -> dict:
@@ -147,10 +140,11 @@ class FlipNode:
 def main(argv=None) -> None:
     rospy.init_node("flip", argv=argv)
     try:
-        values = load_defaults(packaged_settings_path())
-        values.update({field.name: rospy.get_param("~" + field.name)
-                       for field in fields(FlipSettings) if rospy.has_param("~" + field.name)})
-        settings = FlipSettings.from_mapping(values, rospy.resolve_name("~"))
+        path = packaged_settings_path()
+        known = {field.name for field in fields(FlipSettings)}
+        defaults = {name: value for name, value in load_defaults(path).items() if name in known}
+        # a private parameter wins; what is unset comes from the yaml, named as its file's
+        settings = read(FlipSettings, rospy.get_param, "~", defaults=given_from(defaults, path))
     except ValueError as error:
         rospy.logfatal("flip: %s", error)
         sys.exit(2)
