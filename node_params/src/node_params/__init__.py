@@ -94,22 +94,27 @@ non_negative = Check(lambda value: value >= 0, "is negative")
 non_empty = Check(lambda value: len(value) > 0, "is empty")
 
 
+def _shown(bound: float) -> str:
+    """A bound as written: whole numbers in full (4294967295, not 4.29497e+09)."""
+    return str(bound) if isinstance(bound, int) else f"{bound:g}"
+
+
 def at_least(low: float) -> Check:
-    return Check(lambda value: value >= low, f"is less than {low:g}")
+    return Check(lambda value: value >= low, f"is less than {_shown(low)}")
 
 
 def at_most(high: float) -> Check:
-    return Check(lambda value: value <= high, f"is more than {high:g}")
+    return Check(lambda value: value <= high, f"is more than {_shown(high)}")
 
 
 def between(low: float, high: float) -> Check:
-    return Check(lambda value: low <= value <= high, f"is not between {low:g} and {high:g}")
+    return Check(lambda value: low <= value <= high, f"is not between {_shown(low)} and {_shown(high)}")
 
 
 def zero_or_at_least(low: float) -> Check:
     """0 (which usually means "off" or "no limit"), or ``low`` and more."""
     return Check(lambda value: value == 0 or value >= low,
-                 f"is neither 0 nor at least {low:g}")
+                 f"is neither 0 nor at least {_shown(low)}")
 
 
 def one_of(*choices: Any) -> Check:
