@@ -18,6 +18,7 @@ import math
 import os
 import sys
 import threading
+from dataclasses import dataclass
 from typing import Dict, Sequence
 
 import actionlib
@@ -29,9 +30,23 @@ from control_msgs.msg import (FollowJointTrajectoryAction, FollowJointTrajectory
 from sensor_msgs.msg import JointState
 
 from arm_move.kinematics import ARM_JOINTS, FINGER_JOINTS
+from node_params import ParameterError, non_empty, parameter, positive, read
 from sim_bridge.trajectory import Trajectory, Waypoint
 
 Result = FollowJointTrajectoryResult
+
+
+@dataclass(frozen=True)
+class ExecutorSettings:
+    """The private parameters, read with node_params (a bad one stops the node, named)."""
+
+    robot_config: str = parameter("", expected="the arm's yaml (empty: config/px100.yaml)")
+    initial_pose: str = parameter("sleep", non_empty,
+                                  expected="a named pose of the arm's yaml (e.g. sleep, home)")
+    rate: float = parameter(50.0, positive,
+                            expected="Hz > 0 of joint_states and of trajectory sampling")
+    abort_after: float = parameter(
+        -1.0, expected="seconds into each arm motion to abort it (negative: never)")
 
 
 class FakeController:
@@ -104,16 +119,20 @@ class FakeController:
 def main(argv=None) -> None:
     rospy.init_node("fake_executor", argv=argv)
     package = rospkg.RosPack().get_path("arm_move")
-    config_path = rospy.get_param("~robot_config", os.path.join(package, "config", "px100.yaml"))
-    pose_name = rospy.get_param("~initial_pose", "sleep")
-    rate = float(rospy.get_param("~rate", 50.0))
-    abort_after = float(rospy.get_param("~abort_after", -1.0))
-    with open(config_path) as stream:
-        config = yaml.safe_load(stream)
-    if pose_name not in config["named_poses"] or not rate > 0:
-        rospy.logfatal("fake_executor: ~initial_pose must be one of %s and ~rate positive "
-                       "(got %r, %r)", sorted(config["named_poses"]), pose_name, rate)
+    try:
+        settings = read(ExecutorSettings)
+        config_path = settings.robot_config or os.path.join(package, "config", "px100.yaml")
+        with open(config_path) as stream:
+            config = yaml.safe_load(stream)
+        poses = sorted(config["named_poses"])
+        if settings.initial_pose not in poses:
+            raise ParameterError("~initial_pose", settings.initial_pose,
+                                 f"is not a named pose of {config_path}",
+                                 f"one of {', '.join(poses)}")
+    except (ValueError, KeyError, OSError, TypeError) as error:
+        rospy.logfatal("fake_executor: %s", error)
         sys.exit(1)
+    pose_name, rate, abort_after = settings.initial_pose, settings.rate, settings.abort_after
     positions = dict(zip(ARM_JOINTS, map(float, config["named_poses"][pose_name])))
     positions.update({j: float(config["finger"]["max"]) for j in FINGER_JOINTS})
     lock = threading.Lock()

@@ -58,6 +58,7 @@ from arm_move.kinematics import ARM_JOINTS, FINGER_JOINTS
 from arm_move.markers import path_marker, scene_markers
 from arm_move.msg import MoveItErrorCodes as Codes
 from arm_move.planner import ArmPlanner, Plan, planner_from_config, settings_from
+from node_params import non_empty, non_negative, parameter, positive
 from arm_move.scene_config import (PICK_OBJECT, REALSENSE_BOX, TABLE, empty_scene, pick_box,
                                    table_box, unit_quaternion)
 from arm_move.srv import (Follow, FollowResponse, Reset, ResetResponse, Step, StepResponse)
@@ -65,12 +66,20 @@ from arm_move.srv import (Follow, FollowResponse, Reset, ResetResponse, Step, St
 
 @dataclass(frozen=True)
 class MoverSettings:
-    """The mover's own settings (the planner's are PlannerSettings); see config/mover.yaml."""
+    """The mover's own settings (the planner's are PlannerSettings); see config/mover.yaml.
+    Read with node_params: a bad value stops the node naming it."""
 
-    planning_frame: str = "px100/base_link"
-    collision_padding: float = 0.005
-    action_timeout: float = 10.0
-    execution_margin: float = 5.0
+    planning_frame: str = parameter("px100/base_link", non_empty,
+                                    expected="the frame plans and markers are in")
+    collision_padding: float = parameter(
+        0.005, non_negative, expected="metres >= 0 the arm keeps from everything")
+    action_timeout: float = parameter(
+        10.0, positive, expected="seconds > 0 to wait for the controllers' action servers "
+                                 "at start-up (arm.launch's driver_timeout)")
+    execution_margin: float = parameter(
+        5.0, non_negative, expected="seconds >= 0 a motion may run past its planned time")
+    robot_config: str = parameter("", expected="the arm's yaml (empty: config/px100.yaml)")
+    scene_config: str = parameter("", expected="the scene's yaml (empty: config/scene.yaml)")
 
 
 class Outcome(Exception):
@@ -489,13 +498,14 @@ def main(argv=None) -> None:
     try:
         values = _read_yaml(os.path.join(package, "config", "mover.yaml"))
         values.update(rospy.get_param("~", {}))
-        robot = _read_yaml(rospy.get_param("~robot_config",
-                                           os.path.join(package, "config", "px100.yaml")))
-        scene_config = _read_yaml(rospy.get_param("~scene_config",
-                                                  os.path.join(package, "config", "scene.yaml")))
+        # every setting named as the private parameter it is (the yaml's are loaded as such)
+        settings = settings_from(MoverSettings, values, "~")
+        robot = _read_yaml(settings.robot_config
+                           or os.path.join(package, "config", "px100.yaml"))
+        scene_config = _read_yaml(settings.scene_config
+                                  or os.path.join(package, "config", "scene.yaml"))
         waypoints = parse_waypoints(rospy.get_param("~waypoints", None))
-        settings = settings_from(MoverSettings, values)
-        planner = planner_from_config(robot, values)
+        planner = planner_from_config(robot, values, "~")
         mover = Mover(settings, planner, scene_config, waypoints)
         mover.start()
     except (ValueError, KeyError, OSError, RuntimeError) as error:

@@ -29,24 +29,51 @@ from ompl import util as ou
 from arm_move.collision import ArmCollisionModel, Scene
 from arm_move.kinematics import ArmKinematics
 from arm_move.msg import MoveItErrorCodes as Codes
+from node_params import Check, between, non_negative, parameter, positive, read
 
 ou.setLogLevel(ou.LOG_WARN)
 
 
+# OMPL's random seed: OMPL takes unsigned numbers; 0 asks it for a seed of its own (the
+# paths would no longer repeat), and 32 bits are what every platform's OMPL keeps.
+MAX_SEED = 2 ** 32 - 1
+
+
 @dataclass(frozen=True)
 class PlannerSettings:
-    """From config/mover.yaml (units in its comments)."""
+    """From config/mover.yaml (units in its comments), read with node_params."""
 
-    planning_time: float = 1.0
-    resolution_degrees: float = 1.0
-    pitch_step_degrees: float = 5.0
-    preferred_pitch_degrees: float = 90.0
-    goal_count: int = 6
-    velocity_scaling: float = 0.5
-    acceleration: float = 6.0
-    sample_period: float = 0.05
-    seed: int = 1
-    goal_margin: float = 0.003
+    planning_time: float = parameter(1.0, positive,
+                                     expected="seconds > 0 the search may take")
+    resolution_degrees: float = parameter(
+        1.0, positive, expected="degrees > 0 between the states a motion is checked at")
+    pitch_step_degrees: float = parameter(
+        5.0, positive, expected="degrees > 0 between the gripper pitches IK tries")
+    preferred_pitch_degrees: float = parameter(
+        90.0, between(-180.0, 180.0),
+        expected="the gripper pitch IK tries first, degrees in [-180, 180] (90: down)")
+    goal_count: int = parameter(6, positive,
+                                expected="a whole number > 0 of IK solutions to aim at")
+    velocity_scaling: float = parameter(
+        0.5, Check(lambda value: 0 < value <= 1, "is not in (0, 1]"),
+        expected="a fraction in (0, 1] of the joints' speed limit")
+    acceleration: float = parameter(6.0, positive, expected="rad/s^2 > 0, every arm joint")
+    sample_period: float = parameter(0.05, positive,
+                                     expected="seconds > 0 between trajectory points")
+    seed: int = parameter(1, between(1, MAX_SEED),
+                          expected=f"OMPL's seed, a whole number from 1 to {MAX_SEED}")
+    goal_margin: float = parameter(
+        0.003, non_negative, expected="metres >= 0 goals keep beyond the padding")
+
+
+@dataclass(frozen=True)
+class CollisionSettings:
+    """The collision model's settings, from config/mover.yaml too."""
+
+    collision_padding: float = parameter(
+        0.005, non_negative, expected="metres >= 0 the arm keeps from everything")
+    attached_contact_tolerance: float = parameter(
+        0.001, non_negative, expected="metres >= 0 a held object may sink into its support")
 
 
 @dataclass
@@ -335,23 +362,24 @@ class ArmPlanner:
         return plan
 
 
-def settings_from(cls, values: Mapping):
-    """A settings dataclass (every field with a default) from a mapping: known keys only,
-    each cast to its default's type; the rest keep their defaults."""
-    defaults = cls()
-    return cls(**{name: type(getattr(defaults, name))(value) for name, value in values.items()
-                  if name in cls.__dataclass_fields__})
+def settings_from(cls, values: Mapping, prefix: str = ""):
+    """A settings dataclass (fields declared with node_params) from a mapping: known keys
+    only, converted and checked; the rest keep their defaults. node_params.ParameterError
+    (a ValueError) names ``prefix + key``, the value and what is expected."""
+    return read(cls, values, prefix)
 
 
-def planner_from_config(robot: Mapping, settings: Mapping) -> ArmPlanner:
+def planner_from_config(robot: Mapping, settings: Mapping, prefix: str = "") -> ArmPlanner:
     """The planner for a robot yaml (config/px100.yaml) and the mover's settings
-    (config/mover.yaml and private parameters; unknown keys are ignored)."""
+    (config/mover.yaml and private parameters, named ``prefix + key`` in errors; unknown
+    keys are ignored)."""
     kinematics = ArmKinematics.from_config(robot)
+    collision = settings_from(CollisionSettings, settings, prefix)
     model = ArmCollisionModel(kinematics, robot["links"], robot["finger"],
-                              float(settings.get("collision_padding", 0.005)),
+                              collision.collision_padding,
                               robot.get("self_collision_pairs"),  # none: from the geometry
-                              float(settings.get("attached_contact_tolerance", 0.001)))
-    return ArmPlanner(kinematics, model, settings_from(PlannerSettings, settings))
+                              collision.attached_contact_tolerance)
+    return ArmPlanner(kinematics, model, settings_from(PlannerSettings, settings, prefix))
 
 
 def random_reachable_targets(planner: ArmPlanner, scene: Scene, count: int, finger: float,
