@@ -235,7 +235,8 @@ def _pose(element: ET.Element, what: str, source: str) -> Pose6:
     return _numbers(pose.text, 6, f"{what} <pose>", source)  # type: ignore[return-value]
 
 
-def _material(visual: ET.Element) -> Optional[Tuple[float, float, float, float]]:
+def _material(visual: ET.Element, what: str,
+              source: str) -> Optional[Tuple[float, float, float, float]]:
     material = visual.find("material")
     if material is None:
         return None
@@ -246,10 +247,11 @@ def _material(visual: ET.Element) -> Optional[Tuple[float, float, float, float]]
             return colour
     for tag in ("diffuse", "ambient"):
         colour = material.find(tag)
-        if colour is not None and colour.text:
-            values = [float(v) for v in colour.text.split()]
-            if len(values) == 4:
-                return tuple(values)  # type: ignore[return-value]
+        if colour is not None and colour.text and colour.text.strip():
+            if len(colour.text.split()) != 4:  # not a colour: as before, the next is tried
+                continue
+            return _numbers(colour.text, 4, f"{what} <material> <{tag}>",  # type: ignore
+                            source)
     return None
 
 
@@ -288,13 +290,16 @@ def _shape(element: ET.Element, what: str, source: str, model_dir: str) -> Shape
     else:
         raise SdfError(f"{source}: {what} has geometry <{kind}>; sim_bridge reads box, "
                        "cylinder, sphere, plane and mesh")
-    spec.friction = _friction(element)
+    spec.friction = _friction(element, what, source)
     return spec
 
 
-def _friction(element: ET.Element) -> Optional[float]:
+def _friction(element: ET.Element, what: str, source: str) -> Optional[float]:
+    """A collision's ``<surface><friction><ode><mu>``; None when it gives none."""
     mu = element.find("surface/friction/ode/mu")
-    return float(mu.text) if mu is not None and mu.text else None
+    if mu is None or not (mu.text or "").strip():
+        return None
+    return _numbers(mu.text, 1, f"{what} <surface> <friction> <ode> <mu>", source)[0]
 
 
 def _mesh_file(uri: str, model_dir: str) -> str:
@@ -347,7 +352,7 @@ def _link(element: ET.Element, model: str, source: str, model_dir: str,
                          f"{source}: {label}: mesh '{mesh.uri}' {mesh.reason}; the visual "
                          "is left out, the model is loaded without it")
             continue
-        shape.rgba = _material(visual)
+        shape.rgba = _material(visual, label, source)
         link.visuals.append(shape)
         if shape.kind == "mesh":
             visual_meshes.append(((visual.findtext("geometry/mesh/uri") or "").strip(), shape))
@@ -359,7 +364,8 @@ def _link(element: ET.Element, model: str, source: str, model_dir: str,
             link.collisions.append(_shape(collision, label, source, model_dir))
         except _UnreadableMesh as mesh:
             failed.append((label, mesh))
-            friction = friction if friction is not None else _friction(collision)
+            friction = friction if friction is not None \
+                else _friction(collision, label, source)
     if failed:
         _replace_collisions(link, failed, visual_meshes, friction, source, warnings)
     inertial = element.find("inertial")
