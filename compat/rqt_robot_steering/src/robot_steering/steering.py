@@ -16,12 +16,12 @@ The facts follow rqt_robot_steering 0.5.12 (ROS noetic):
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import Callable, List, Optional, Tuple
 
 import rosgraph.names
 from geometry_msgs.msg import Twist
+from node_params import ParameterError, convert
 
 SLIDER_FACTOR = 1000
 SINGLE_STEP = 10
@@ -66,9 +66,10 @@ def read_settings(get_param: Callable[[str, object], object]) -> Tuple[Settings,
     warnings: List[str] = []
     values = {}
 
-    topic = get_param("~" + TOPIC_PARAMETER, defaults.topic)
-    if not isinstance(topic, str):
-        warnings.append(f"~{TOPIC_PARAMETER} must be a topic name (a string), not {topic!r}; "
+    label = "~" + TOPIC_PARAMETER
+    topic = get_param(label, defaults.topic)
+    if not isinstance(topic, str):  # a number or a list: no topic was meant; the default
+        warnings.append(f"{ParameterError(label, topic, 'is not text', 'a topic name')}; "
                         f"using {defaults.topic}")
         topic = defaults.topic
     else:
@@ -80,9 +81,11 @@ def read_settings(get_param: Callable[[str, object], object]) -> Tuple[Settings,
     for parameter, (field, low, high) in RANGE_PARAMETERS.items():
         default = getattr(defaults, field)
         raw = get_param("~" + parameter, default)
-        number = _as_number(raw)
-        if number is None:
-            warnings.append(f"~{parameter} must be a number, not {raw!r}; using {default}")
+        try:  # node_params converts what roslaunch hands over; a bad value only warns here
+            number = convert(float, raw, "~" + parameter,
+                             f"a number between {low} and {high}")
+        except ParameterError as error:
+            warnings.append(f"{error}; using {default}")
             number = default
         clamped = clamp_range(number, low, high)
         if abs(clamped - number) > 10 ** -RANGE_DECIMALS / 2:
@@ -90,16 +93,6 @@ def read_settings(get_param: Callable[[str, object], object]) -> Tuple[Settings,
                             f"{number} becomes {clamped}")
         values[field] = clamped
     return Settings(**values), warnings
-
-
-def _as_number(value) -> Optional[float]:
-    if isinstance(value, bool):
-        return None
-    try:
-        number = float(value)
-    except (TypeError, ValueError):
-        return None
-    return number if math.isfinite(number) else None
 
 
 def topic_problem(topic: str) -> Optional[str]:

@@ -34,9 +34,10 @@ def test_parameters_override_every_default():
     ("default_vx_max", -1.0, "vx_max", 0.0, "~default_vx_max must lie between 0.0 and 10.0"),
     ("default_vx_min", 0.5, "vx_min", 0.0, "~default_vx_min must lie between -10.0 and 0.0"),
     ("default_vw_min", -20, "vw_min", -10.0, "~default_vw_min must lie between -10.0 and 0.0"),
-    ("default_vw_max", "fast", "vw_max", 3.0, "~default_vw_max must be a number, not 'fast'"),
-    ("default_vw_max", True, "vw_max", 3.0, "~default_vw_max must be a number, not True"),
-    ("default_vx_min", float("nan"), "vx_min", -1.0, "~default_vx_min must be a number"),
+    ("default_vw_max", "fast", "vw_max", 3.0, "~default_vw_max: 'fast' is not a number; expected a number between 0.0 and 10.0; using 3.0"),
+    ("default_vw_max", True, "vw_max", 3.0, "~default_vw_max: True is a boolean, not a number"),
+    ("default_vx_min", float("nan"), "vx_min", -1.0, "~default_vx_min: nan is not a finite number"),
+    ("default_vx_min", "nan", "vx_min", -1.0, "~default_vx_min: 'nan' is not a finite number"),
 ])
 def test_a_bad_range_is_named_and_replaced(name, value, field, expected, says):
     settings, warnings = read_settings(params(**{name: value}))
@@ -54,7 +55,7 @@ def test_ranges_keep_two_decimals_as_the_spin_boxes():
 def test_a_topic_that_is_not_a_string_falls_back_to_cmd_vel():
     settings, warnings = read_settings(params(default_topic=5))
     assert settings.topic == "/cmd_vel"
-    assert "~default_topic must be a topic name" in warnings[0]
+    assert "~default_topic: 5 is not text; expected a topic name; using /cmd_vel" in warnings[0]
 
 
 def test_an_illegal_topic_is_kept_with_a_warning():

@@ -10,12 +10,25 @@ import sys
 import termios
 import tty
 
+from dataclasses import dataclass
+
 import rospy
 from geometry_msgs.msg import Twist
+from node_params import ParameterError, parameter, positive, read
 
 from keyboard_teleop.keys import HELP, Teleop
 
 CTRL_C = "\x03"
+
+
+@dataclass(frozen=True)
+class TeleopSettings:
+    """The private parameters, read with node_params (a bad one stops the node, named)."""
+
+    speed: float = parameter(0.5, positive, expected="the starting linear speed, m/s > 0")
+    turn: float = parameter(1.0, positive, expected="the starting turning speed, rad/s > 0")
+    repeat_rate: float = parameter(
+        10.0, positive, expected="how often the command is republished, Hz > 0")
 
 
 def read_key(stream, timeout: float) -> str:
@@ -28,8 +41,13 @@ def read_key(stream, timeout: float) -> str:
 
 def main() -> None:
     rospy.init_node("teleop_twist_keyboard")
-    teleop = Teleop(float(rospy.get_param("~speed", 0.5)), float(rospy.get_param("~turn", 1.0)))
-    period = 1.0 / float(rospy.get_param("~repeat_rate", 10.0))
+    try:
+        settings = read(TeleopSettings)
+    except ParameterError as error:
+        rospy.logfatal("teleop_twist_keyboard: %s", error)
+        sys.exit(1)
+    teleop = Teleop(settings.speed, settings.turn)
+    period = 1.0 / settings.repeat_rate
     publisher = rospy.Publisher("cmd_vel", Twist, queue_size=1)
     stdin = sys.stdin
     if not stdin.isatty():
