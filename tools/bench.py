@@ -1,19 +1,39 @@
-"""``make bench``: sim_bridge's speed and memory, measured in one run, printed as a table.
+"""``make bench``: sim_bridge's speed and memory, measured in one run, printed as a table
+with each figure's target and whether it is met.
 
 The scene (tools/bench/): a closed hall with 40 static objects and an RB1-class robot
 (diff drive, 720-beam laser at 20 Hz), driving in a circle while measured.
 
   max real-time factor, ROS     roslaunch bench.launch real_time_factor:=0; simulated
-                                seconds per wall second over the window, from /clock
-  max real-time factor, bare    the same world and robot built by sim_bridge's core, then
-                                stepped by pybullet alone (stepSimulation, and the 720 rays
-                                every 50 steps), no ROS
-  ROS overhead                  bare / ROS
+                                seconds per wall second over the window, from /clock; with
+                                the world's 1 ms max_step_size, and with the same world
+                                asking for a 1/240 s step
+  bare pybullet                 the same world and robot built by sim_bridge's core, then
+                                stepped with its physics alone (World.step_physics: the
+                                tyres' friction and pybullet's step) and the 720 rays every
+                                50 steps, no plugins, no ROS
+  ROS overhead                  bare / ROS (1 ms step)
   CPU at real time              the simulator process's CPU time per wall second, paced
                                 at real_time_factor:=1 (share of one core)
   first /scan                   wall seconds from starting roslaunch (master already up)
                                 to the first /scan message
-  peak RSS                      the simulator process's VmHWM
+  peak RSS                      the simulator process's VmHWM, largest of the ROS runs
+  N robots                      1, 2, 4, 8 robots with lasers, each in its namespace
+                                (spawned through /gazebo/spawn_urdf_model), all driving:
+                                the simulator's CPU ms per simulated second, and the real-
+                                time factor with 8; linear means 8 cost at most 8 x one
+  rviz-like subscribers         max real-time factor with this process subscribed to /tf,
+                                /odom, /scan and /gazebo/model_states, as rviz would be
+  stopped subscriber            max real-time factor with a second process subscribed to
+                                /scan, /tf and /clock and then stopped (SIGSTOP), over the
+                                same without it: a subscriber that stops reading must not
+                                stall the simulator
+  laser                         tools/bench/laser_cost.py: ms per scan for 360/720/1440
+                                beams, the fixed cost of a scan
+  soak                          my_rb1_ros rotate_demo.launch at real time for
+                                BENCH_SOAK_MINUTES (default 10; 0 leaves it out): driving
+                                back and forth and /rotate_robot calls; the simulator's RSS
+                                growth after the first minute, and the calls that failed
   planning time                 arm_move's planner on 200 random reachable, collision-free
                                 targets in the table scene, each from where the last
                                 ended (the unit test's targets): median and 95th percentile
@@ -24,25 +44,43 @@ bench_results/bench.txt.
 from __future__ import annotations
 
 import os
+import signal
 import subprocess
 import sys
 import time
-from typing import Dict, Optional
+from typing import Dict, List, Optional, Sequence
 
 import headless
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BENCH = os.path.join(REPO, "tools", "bench")
 OUTPUT = os.path.join(REPO, "bench_results")
+sys.path.insert(0, BENCH)
+import laser_cost  # noqa: E402  (tools/bench/ is not a package)
+
 WINDOW = 10.0  # wall seconds each rate is measured over
+STEP_240 = 1.0 / 240.0  # the step of the second world (pybullet's default)
+ROBOT_COUNTS = (1, 2, 4, 8)
+RVIZ_TOPICS = ("/tf", "/odom", "/scan", "/gazebo/model_states")
+SOAK_MINUTES = float(os.environ.get("BENCH_SOAK_MINUTES", "10"))
+SOAK_WARM_UP = 60.0  # s of the soak before the RSS it grows from is read
+PLANNING_TARGETS = 200
 TARGETS = {
-    "max real-time factor, ROS": (">=", 10.0),
-    "ROS overhead (bare / ROS)": ("<=", 1.5),
-    "CPU at real time (% of a core)": ("<=", 15.0),
-    "first /scan after roslaunch (s)": ("<=", 3.0),
-    "peak RSS (MB)": ("<=", 300.0),
+    "max real-time factor, ROS, 1 ms step": (">=", 20.0),
+    "max real-time factor, ROS, 1/240 s step": (">=", 40.0),
+    "ROS overhead (bare / ROS)": ("<=", 1.2),
+    "CPU at real time (% of a core)": ("<=", 5.0),
+    "first /scan after roslaunch (s)": ("<=", 1.5),
+    "peak RSS (MB)": ("<=", 150.0),
+    "8 robots' cost / 8 x one robot's": ("<=", 1.0),
+    "8 robots, max real-time factor": (">=", 3.0),
+    "rviz-like subscribers, max real-time factor": (">=", 12.0),
+    "stopped subscriber: real-time factor kept (%)": (">=", 90.0),
+    "fixed cost per scan, 1 beam (ms)": ("<=", 0.2),
+    "soak: RSS growth (MB)": ("<", 5.0),
+    "soak: failed calls": ("<=", 0.0),
     "arm planning, median (ms)": ("<=", 50.0),
 }
-PLANNING_TARGETS = 200
 
 
 def simulator_pid() -> Optional[int]:
@@ -66,16 +104,18 @@ def cpu_seconds(pid: int) -> float:
     return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
 
-def peak_rss_mb(pid: int) -> float:
+def rss_mb(pid: int, field: str = "VmHWM") -> float:
+    """VmHWM (peak) or VmRSS (now) of a process, in MB."""
     with open(f"/proc/{pid}/status", encoding="ascii") as stream:
         for line in stream:
-            if line.startswith("VmHWM:"):
+            if line.startswith(field + ":"):
                 return int(line.split()[1]) / 1024.0
     return float("nan")
 
 
 class RosProbe:
-    """A rospy node in this process: the first /scan, the latest /clock, a driving command."""
+    """A rospy node in this process: the first /scan, the latest /clock, driving commands,
+    and subscriptions held for a while (as rviz holds them)."""
 
     def __init__(self):
         import rospy
@@ -88,10 +128,9 @@ class RosProbe:
         self.clock = 0.0
         rospy.Subscriber("/scan", LaserScan, self._on_scan, queue_size=1)
         rospy.Subscriber("/clock", Clock, self._on_clock, queue_size=1)
-        self.command = rospy.Publisher("/cmd_vel", Twist, queue_size=1, latch=True)
-        circle = Twist()
-        circle.linear.x, circle.angular.z = 0.3, 0.5
-        self.circle = circle
+        self.circle = Twist()
+        self.circle.linear.x, self.circle.angular.z = 0.3, 0.5
+        self._commands: Dict[str, object] = {}
 
     def _on_scan(self, _message):
         if self.first_scan_wall is None:
@@ -104,33 +143,185 @@ class RosProbe:
         self.first_scan_wall = None
         self.clock = 0.0
 
+    def drive(self, namespace: str = "") -> None:
+        """Sends the circle to ``namespace``'s cmd_vel (latched: it arrives whenever the
+        robot subscribes)."""
+        from geometry_msgs.msg import Twist
+        topic = f"{namespace}/cmd_vel"
+        if topic not in self._commands:
+            self._commands[topic] = self.rospy.Publisher(topic, Twist, queue_size=1,
+                                                         latch=True)
+        self._commands[topic].publish(self.circle)
 
-def measure_ros(env: Dict[str, str], probe: RosProbe, real_time_factor: str) -> Dict[str, float]:
-    results: Dict[str, float] = {}
+    def listen(self, topics: Sequence[str]) -> List[object]:
+        """Subscribes to ``topics`` with their real types (each message deserialised, as
+        rviz does); the caller unregisters the returned subscribers."""
+        import rostopic
+        subscribers = []
+        for topic in topics:
+            message_class = headless.wait_until(lambda: rostopic.get_topic_class(topic)[0],
+                                                30, f"{topic} to be published")
+            subscribers.append(self.rospy.Subscriber(topic, message_class,
+                                                     lambda _message: None, queue_size=10))
+        return subscribers
+
+
+def spawn_robots(count: int) -> None:
+    """``count`` RB1-class robots in namespaces r0, r1, ... on the hall's free lanes."""
+    import rospy
+    from gazebo_msgs.srv import SpawnModel
+    from geometry_msgs.msg import Pose
+    from urdf_tools.xacro_loader import expand
+    rospy.wait_for_service("/gazebo/spawn_urdf_model", timeout=60)
+    spawn = rospy.ServiceProxy("/gazebo/spawn_urdf_model", SpawnModel)
+    for index in range(count):
+        namespace = f"r{index}"
+        xml = expand(laser_cost.ROBOT, {"laser_samples": str(laser_cost.CROWD_BEAMS),
+                                        "laser_half_fov_degrees": laser_cost.HALF_FIELD_DEGREES,
+                                        "namespace": namespace})
+        pose = Pose()
+        pose.position.x, pose.position.y = laser_cost.SPOTS[index]
+        pose.position.z = laser_cost.SPAWN_HEIGHT
+        pose.orientation.w = 1.0
+        answer = spawn(model_name=f"robot_{index}", model_xml=xml, robot_namespace=namespace,
+                       initial_pose=pose, reference_frame="")
+        if not answer.success:
+            raise RuntimeError(f"spawning robot {index}: {answer.status_message}")
+
+
+def world_240() -> str:
+    """The bench world asking for a 1/240 s step (written to bench_results/)."""
+    with open(os.path.join(BENCH, "bench.world"), encoding="utf-8") as stream:
+        text = stream.read()
+    asked = "<max_step_size>0.001</max_step_size>"
+    if asked not in text:
+        raise RuntimeError(f"tools/bench/bench.world no longer says {asked}")
+    path = os.path.join(OUTPUT, "bench_240.world")
+    with open(path, "w", encoding="utf-8") as stream:
+        stream.write(text.replace(asked, f"<max_step_size>{STEP_240!r}</max_step_size>"))
+    return path
+
+
+def stopped_subscriber(env: Dict[str, str]) -> subprocess.Popen:
+    """A process subscribed to /scan, /tf and /clock that prints 'reading' once it has a
+    scan; the caller stops it with SIGSTOP."""
+    code = ("import rospy, sys\n"
+            "from sensor_msgs.msg import LaserScan\n"
+            "from tf2_msgs.msg import TFMessage\n"
+            "from rosgraph_msgs.msg import Clock\n"
+            "rospy.init_node('stopped_subscriber', anonymous=True)\n"
+            "rospy.Subscriber('/tf', TFMessage, lambda m: None)\n"
+            "rospy.Subscriber('/clock', Clock, lambda m: None)\n"
+            "rospy.wait_for_message('/scan', LaserScan, timeout=60)\n"
+            "rospy.Subscriber('/scan', LaserScan, lambda m: None)\n"
+            "print('reading', flush=True)\n"
+            "rospy.spin()\n")
+    return subprocess.Popen([sys.executable, "-c", code], env=env, stdout=subprocess.PIPE,
+                            stderr=subprocess.DEVNULL, text=True, start_new_session=True)
+
+
+def measure_window(probe: RosProbe, pid: int) -> Dict[str, float]:
+    """Real-time factor and CPU over WINDOW wall seconds."""
+    wall0, sim0, cpu0 = time.monotonic(), probe.clock, cpu_seconds(pid)
+    headless.wait_until(lambda: time.monotonic() - wall0 >= WINDOW, WINDOW + 5, "the window")
+    wall1, sim1, cpu1 = time.monotonic(), probe.clock, cpu_seconds(pid)
+    return {"rtf": (sim1 - sim0) / (wall1 - wall0),
+            "cpu": 100.0 * (cpu1 - cpu0) / (wall1 - wall0),
+            "cpu_ms_per_sim_s": 1000.0 * (cpu1 - cpu0) / max(sim1 - sim0, 1e-9),
+            "rss": rss_mb(pid)}
+
+
+def measure_ros(env: Dict[str, str], probe: RosProbe, name: str, real_time_factor: str = "0",
+                world: Optional[str] = None, robots: int = 0,
+                listen: Sequence[str] = (), stop_a_subscriber: bool = False) -> Dict[str, float]:
+    """One launch of the bench scene: the launch's own robot, or ``robots`` robots in
+    namespaces; measured over a window once the first /scan (or /clock) arrived."""
     probe.reset()
-    log = os.path.join(OUTPUT, f"bench_rtf{real_time_factor}.log")
+    log = os.path.join(OUTPUT, f"bench_{name}.log")
+    arguments = [os.path.join(BENCH, "bench.launch"), f"real_time_factor:={real_time_factor}",
+                 f"robot:={'false' if robots else 'true'}"]
+    if world:
+        arguments.append(f"world:={world}")
+    held: List[object] = []
+    blocked = None
     started = time.monotonic()
-    with headless.roslaunch([os.path.join(REPO, "tools", "bench", "bench.launch"),
-                             f"real_time_factor:={real_time_factor}"], env, log) as launch:
-        headless.wait_until(lambda: probe.first_scan_wall is not None or not launch.running(),
-                            60, "the first /scan")
-        if probe.first_scan_wall is None:
-            raise RuntimeError(f"the simulator stopped; see {log}")
-        results["first_scan"] = probe.first_scan_wall - started
-        pid = simulator_pid()
-        probe.command.publish(probe.circle)
-        wall0, sim0, cpu0 = time.monotonic(), probe.clock, cpu_seconds(pid)
-        headless.wait_until(lambda: time.monotonic() - wall0 >= WINDOW, WINDOW + 5, "the window")
-        wall1, sim1, cpu1 = time.monotonic(), probe.clock, cpu_seconds(pid)
-        results["rtf"] = (sim1 - sim0) / (wall1 - wall0)
-        results["cpu"] = 100.0 * (cpu1 - cpu0) / (wall1 - wall0)
-        results["rss"] = peak_rss_mb(pid)
+    with headless.roslaunch(arguments, env, log) as launch:
+        try:
+            if robots:
+                spawn_robots(robots)
+                for index in range(robots):
+                    probe.drive(f"/r{index}")
+            headless.wait_until(lambda: (probe.first_scan_wall is not None or robots)
+                                and probe.clock > 0 or not launch.running(), 60,
+                                "the simulator's first /scan")
+            if not launch.running():
+                raise RuntimeError(f"the simulator stopped; see {log}")
+            results = {"first_scan": (probe.first_scan_wall or float("nan")) - started}
+            if not robots:
+                probe.drive()
+            held = probe.listen(listen)
+            if stop_a_subscriber:
+                blocked = stopped_subscriber(env)
+                if blocked.stdout.readline().strip() != "reading":
+                    raise RuntimeError("the subscriber to be stopped never read a scan")
+                os.kill(blocked.pid, signal.SIGSTOP)
+            results.update(measure_window(probe, simulator_pid()))
+        finally:
+            for subscriber in held:
+                subscriber.unregister()
+            if blocked is not None:
+                os.killpg(blocked.pid, signal.SIGKILL)
+                blocked.wait()
     return results
 
 
+def measure_soak(env: Dict[str, str], minutes: float) -> Dict[str, float]:
+    """The RB1 in the warehouse with its rotate service, at real time, for ``minutes``:
+    driving back and forth and turning by service calls."""
+    import rospy
+    from geometry_msgs.msg import Twist
+    from my_rb1_ros.srv import Rotate
+    log = os.path.join(OUTPUT, "bench_soak.log")
+    failures: List[str] = []
+    calls = 0
+    with headless.roslaunch(["my_rb1_ros", "rotate_demo.launch", "gui:=false", "rviz:=false"],
+                            env, log) as launch:
+        rospy.wait_for_service("/rotate_robot", timeout=60)
+        rotate = rospy.ServiceProxy("/rotate_robot", Rotate)
+        command = rospy.Publisher("/cmd_vel", Twist, queue_size=1)
+        pid = headless.wait_until(simulator_pid, 60, "the simulator")
+        began = time.monotonic()
+        rss_start = None
+        leg = 0
+        while time.monotonic() - began < minutes * 60.0 and launch.running():
+            if rss_start is None and time.monotonic() - began >= SOAK_WARM_UP:
+                rss_start = rss_mb(pid, "VmRSS")
+            twist = Twist()
+            twist.linear.x = 0.2 if leg % 2 == 0 else -0.2
+            command.publish(twist)
+            rospy.sleep(2.0)  # simulated seconds of driving
+            command.publish(Twist())
+            degrees = 90 if leg % 2 == 0 else -90
+            try:
+                calls += 1
+                result = rotate(degrees).result
+                if not result.startswith("success"):
+                    failures.append(result)
+            except (rospy.ServiceException, rospy.ROSException) as error:
+                failures.append(str(error))
+            leg += 1
+        if not launch.running():
+            failures.append(f"the launch stopped; see {log}")
+        rss_end = rss_mb(pid, "VmRSS")
+    if failures:
+        with open(os.path.join(OUTPUT, "bench_soak_failures.txt"), "w") as stream:
+            stream.write("\n".join(failures) + "\n")
+    return {"growth": rss_end - (rss_start if rss_start is not None else rss_end),
+            "failed": float(len(failures)), "calls": float(calls)}
+
+
 def measure_bare() -> float:
-    """Real-time factor of the same scene stepped by pybullet alone."""
-    import pybullet as pb
+    """Real-time factor of the same scene stepped with the core's physics alone."""
     from geometry_msgs.msg import Twist
 
     from sim_bridge.plugins.base import Bus
@@ -177,12 +368,12 @@ def measure_bare() -> float:
     circle = Twist()
     circle.linear.x, circle.angular.z = 0.3, 0.5
     bus.callback(circle)
-    drive.before_step(0)  # sets the wheel motors once; then pybullet alone
+    drive.before_step(0)  # sets the wheel motors once; then the physics alone
     steps_per_scan = int(round(0.05 / world.step_size))
     steps = int(round(WINDOW / world.step_size))
     started = time.perf_counter()
     for step in range(steps):
-        pb.stepSimulation(physicsClientId=world.client)
+        world.step_physics()
         if step % steps_per_scan == 0:
             laser.measure()
     elapsed = time.perf_counter() - started
@@ -221,7 +412,7 @@ def measure_planning() -> Dict[str, float]:
 
 def verdict(name: str, value: float) -> str:
     sense, target = TARGETS[name]
-    met = value >= target if sense == ">=" else value <= target
+    met = {">=": value >= target, "<=": value <= target, "<": value < target}[sense]
     return f"{sense} {target:g}", "met" if met else "NOT met"
 
 
@@ -237,36 +428,73 @@ def main() -> int:
             import rosgraph
             headless.wait_until(lambda: rosgraph.is_master_online(), 30, "the master")
             probe = RosProbe()
-            print("bench: max real-time factor with ROS...", flush=True)
-            fast = measure_ros(env, probe, "0")
+            print("bench: max real-time factor with ROS, 1 ms step...", flush=True)
+            fast = measure_ros(env, probe, "fast")
+            print("bench: the same, 1/240 s step...", flush=True)
+            fast_240 = measure_ros(env, probe, "fast_240", world=world_240())
             print("bench: CPU at real time...", flush=True)
-            paced = measure_ros(env, probe, "1")
+            paced = measure_ros(env, probe, "paced", real_time_factor="1")
+            print("bench: rviz-like subscribers...", flush=True)
+            rviz = measure_ros(env, probe, "rviz", listen=RVIZ_TOPICS)
+            print("bench: a stopped subscriber...", flush=True)
+            stopped = measure_ros(env, probe, "stopped", stop_a_subscriber=True)
+            crowd = {}
+            for robots in ROBOT_COUNTS:
+                print(f"bench: {robots} robots...", flush=True)
+                crowd[robots] = measure_ros(env, probe, f"robots_{robots}", robots=robots)
+            soak = None
+            if SOAK_MINUTES > 0:
+                print(f"bench: soak, {SOAK_MINUTES:g} minutes at real time...", flush=True)
+                soak = measure_soak(env, SOAK_MINUTES)
         finally:
             core.terminate()
             core.wait(timeout=20)
-    print("bench: the same scene on bare pybullet...", flush=True)
+    print("bench: the same scene, physics alone...", flush=True)
     bare = measure_bare()
+    print("bench: lasers...", flush=True)
+    lasers = laser_cost.measure()
     print("bench: arm planning...", flush=True)
     planning = measure_planning()
+    one, eight = crowd[1]["cpu_ms_per_sim_s"], crowd[8]["cpu_ms_per_sim_s"]
     rows = [
-        ("max real-time factor, ROS", fast["rtf"], "{:.1f}"),
-        ("max real-time factor, bare pybullet", bare, "{:.1f}"),
+        ("max real-time factor, ROS, 1 ms step", fast["rtf"], "{:.1f}"),
+        ("max real-time factor, ROS, 1/240 s step", fast_240["rtf"], "{:.1f}"),
+        ("max real-time factor, physics alone, 1 ms", bare, "{:.1f}"),
         ("ROS overhead (bare / ROS)", bare / fast["rtf"], "{:.2f}"),
         ("CPU at real time (% of a core)", paced["cpu"], "{:.1f}"),
         ("real-time factor when paced", paced["rtf"], "{:.3f}"),
         ("first /scan after roslaunch (s)", fast["first_scan"], "{:.2f}"),
-        ("peak RSS (MB)", max(fast["rss"], paced["rss"]), "{:.0f}"),
+        ("peak RSS (MB)", max(r["rss"] for r in (fast, fast_240, paced, rviz)), "{:.0f}"),
+    ]
+    rows += [(f"{n} robot{'s' if n > 1 else ''}: simulator CPU ms per simulated s",
+              crowd[n]["cpu_ms_per_sim_s"], "{:.0f}") for n in ROBOT_COUNTS]
+    rows += [
+        ("8 robots' cost / 8 x one robot's", eight / (8 * one), "{:.2f}"),
+        ("8 robots, max real-time factor", crowd[8]["rtf"], "{:.1f}"),
+        ("rviz-like subscribers, max real-time factor", rviz["rtf"], "{:.1f}"),
+        ("stopped subscriber: real-time factor kept (%)", 100.0 * stopped["rtf"] / fast["rtf"],
+         "{:.0f}"),
+    ]
+    rows += [(name, value["after"], "{:.3f}") for name, value in lasers.items()
+             if isinstance(value, dict) and "scan" in name]
+    if soak is not None:
+        rows += [("soak: RSS growth (MB)", soak["growth"], "{:.1f}"),
+                 ("soak: failed calls", soak["failed"], "{:.0f}"),
+                 ("soak: rotate calls", soak["calls"], "{:.0f}")]
+    rows += [
         ("arm planning, median (ms)", planning["median"], "{:.1f}"),
         ("arm planning, 95th percentile (ms)", planning["p95"], "{:.1f}"),
         ("arm planning, targets reached (%)", planning["success"], "{:.1f}"),
     ]
-    lines = ["sim_bridge benchmark: 40 static objects, diff drive, 720-beam laser at 20 Hz, "
-             f"{WINDOW:g} s windows; arm_move planning: {PLANNING_TARGETS} random targets", "",
-             f"| {'figure':38} | {'measured':>9} | {'target':>8} | {'':7} |",
-             f"|{'-' * 40}|{'-' * 11}|{'-' * 10}|{'-' * 9}|"]
+    width = max(len(name) for name, _, _ in rows)
+    lines = ["sim_bridge benchmark: 40 static objects, RB1-class robots (diff drive, 720-beam "
+             f"laser at 20 Hz), {WINDOW:g} s windows; laser kernel: {lasers['kernel']}; "
+             f"arm_move planning: {PLANNING_TARGETS} random targets", "",
+             f"| {'figure':{width}} | {'measured':>9} | {'target':>8} | {'':7} |",
+             f"|{'-' * (width + 2)}|{'-' * 11}|{'-' * 10}|{'-' * 9}|"]
     for name, value, form in rows:
         target, met = verdict(name, value) if name in TARGETS else ("", "")
-        lines.append(f"| {name:38} | {form.format(value):>9} | {target:>8} | {met:7} |")
+        lines.append(f"| {name:{width}} | {form.format(value):>9} | {target:>8} | {met:7} |")
     table = "\n".join(lines)
     print(table)
     with open(os.path.join(OUTPUT, "bench.txt"), "w", encoding="utf-8") as stream:

@@ -915,18 +915,22 @@ class World:
 
     # --- stepping -------------------------------------------------------------------------
     def step(self) -> bool:
-        """One physics step; False (and nothing happens) while paused."""
+        """One physics step with the plugins around it; False (and nothing happens) while
+        paused."""
         if self.paused:
             return False
-        if self._plugins is None:  # the models changed since the last step
-            self._plugins = [p for m in self.models.values() for p in m.plugins]
-            self._weightless = [m.robot for m in self.models.values()
-                                if m.robot is not None and m.robot.weightless_links]
-            self._frictions = [m.friction for m in self.models.values() if m.friction]
-            for friction in self._frictions:
-                friction.forget()
+        self._refresh_step_lists()
         for plugin in self._plugins:
             plugin.before_step(self.now_ns)
+        self.step_physics()
+        for plugin in self._plugins:
+            plugin.after_step(self.now_ns)
+        return True
+
+    def step_physics(self) -> None:
+        """The physics of one step alone (forces, tyres, pybullet's step), no plugins: what
+        the benchmark compares the whole simulator with."""
+        self._refresh_step_lists()
         for robot in self._weightless:
             robot.apply_weightlessness(self.gravity)
         if self.forces:
@@ -935,9 +939,15 @@ class World:
             friction.apply()
         pb.stepSimulation(physicsClientId=self.client)
         self.now_ns += self._step_ns
-        for plugin in self._plugins:
-            plugin.after_step(self.now_ns)
-        return True
+
+    def _refresh_step_lists(self) -> None:
+        if self._plugins is None:  # the models changed since the last step
+            self._plugins = [p for m in self.models.values() for p in m.plugins]
+            self._weightless = [m.robot for m in self.models.values()
+                                if m.robot is not None and m.robot.weightless_links]
+            self._frictions = [m.friction for m in self.models.values() if m.friction]
+            for friction in self._frictions:
+                friction.forget()
 
     # --- ray casting (lasers) -------------------------------------------------------------
     def cast_rays(self, origin: Sequence[float], directions: np.ndarray, near: float,
