@@ -70,6 +70,8 @@ CASTER_CLEARANCE = 0.001
 # smaller in radius the core under it is
 TREAD_WIDTH = 0.002
 CORE_CLEARANCE = 0.001
+# the <robot name> pybullet is given (see prepare_urdf)
+PYBULLET_ROBOT_NAME = "robot"
 
 Vec3 = Tuple[float, float, float]
 Quat = Tuple[float, float, float, float]
@@ -299,6 +301,10 @@ def prepare_urdf(xml: str, model: RobotModel, tags: GazeboTags, warn) -> str:
             ET.SubElement(inertial, "inertia", ixx=str(NEGLIGIBLE_INERTIA), ixy="0", ixz="0",
                           iyy=str(NEGLIGIBLE_INERTIA), iyz="0", izz=str(NEGLIGIBLE_INERTIA))
         prepare_meshes(link, model.source, warn)
+    # pybullet's importer crashes (SIGSEGV) on a robot name of about 42,000 characters or
+    # more (found by the fuzz tier); nothing reads the name pybullet keeps, the model's
+    # name is the spawn request's
+    root.set("name", PYBULLET_ROBOT_NAME)
     # <gazebo> and <transmission> mean nothing to pybullet's importer
     for tag in ("gazebo", "transmission"):
         for element in root.findall(tag):

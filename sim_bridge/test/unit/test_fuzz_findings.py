@@ -51,3 +51,42 @@ def test_sdf_material_colours_as_before():
                                    "<ambient>0 1 0 1</ambient></material>")
     # three values are no colour: the ambient one is taken, as before
     assert sdf_world.parse_model(text, "cart.sdf").links[0].visuals[0].rgba == (0, 1, 0, 1)
+
+
+LONG_NAME_ROBOT = """<robot name="{name}"><link name="base_link"><inertial><mass value="1"/>
+  <inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial>
+  <collision><geometry><box size="0.2 0.2 0.2"/></geometry></collision></link></robot>"""
+
+
+def test_pybullet_is_given_a_short_robot_name():
+    from sim_bridge.gazebo_tags import read_gazebo_tags
+    from sim_bridge.robot_body import PYBULLET_ROBOT_NAME, prepare_urdf
+    from urdf_tools.model import parse_urdf
+    text = LONG_NAME_ROBOT.format(name="n" * 100000)
+    model = parse_urdf(text, "long.urdf")
+    prepared = prepare_urdf(text, model, read_gazebo_tags(model), lambda warning: None)
+    assert f'<robot name="{PYBULLET_ROBOT_NAME}">' in prepared
+
+
+def test_a_robot_with_a_100000_character_name_spawns():
+    # was: pybullet's URDF importer died with SIGSEGV (a robot name of 42,184 characters or
+    # more), taking the simulator with it; run in a child process so that a regression is a
+    # failure, not a crash of the test run
+    import subprocess
+    import sys
+    import textwrap
+    script = textwrap.dedent(f"""
+        import sys
+        sys.path.insert(0, {repr(__import__('os').path.dirname(__file__))})
+        from recording_bus import RecordingBus
+        from sim_bridge.world import World
+        world = World(RecordingBus(), ray_threads=1)
+        text = {LONG_NAME_ROBOT!r}.format(name="n" * 100000)
+        world.spawn_urdf("long", text, (0, 0, 0.5))
+        world.step()
+        print("spawned", sorted(world.models))
+    """)
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                          timeout=120)
+    assert done.returncode == 0, (done.returncode, done.stderr[-2000:])
+    assert "spawned ['long']" in done.stdout
