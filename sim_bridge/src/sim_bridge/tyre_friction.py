@@ -139,16 +139,15 @@ class TyreFriction:
         self.all_tyres.difference_update((self.body, link) for link in self.links)
 
     def apply(self) -> None:
-        client, body = self.client, self.body
+        client, body, tyres = self.client, self.body, self.tyres
         contacts = [c for c in pb.getContactPoints(bodyA=body, physicsClientId=client)
-                    if c[3] in self.tyres and c[9] > 0.0]
+                    if c[3] in tyres and c[9] > 0.0]
         if not contacts:
             return
-        states = pb.getLinkStates(body, self.links, computeLinkVelocity=1,
-                                  physicsClientId=client)
-        link_state = dict(zip(self.links, states))
+        states = dict(zip(self.links, pb.getLinkStates(body, self.links, computeLinkVelocity=1,
+                                                       physicsClientId=client)))
         for contact in contacts:
-            self._apply_one(contact, link_state[contact[3]])
+            self._apply_one(contact, states[contact[3]])
 
     def _other(self, body: int, link: int) -> Tuple[bool, float]:
         key = (body, link)
@@ -158,41 +157,44 @@ class TyreFriction:
         return self._others[key]
 
     def _apply_one(self, contact, state) -> None:
+        # written out component by component: this runs for every tyre contact every step
         client, body = self.client, self.body
         link, other, other_link = contact[3], contact[2], contact[4]
-        point, normal, load = contact[5], contact[7], contact[9]
+        (px, py, pz), (nx, ny, nz), load = contact[5], contact[7], contact[9]
         tyre = self.tyres[link]
         other_is_tyre = (other, other_link) in self.all_tyres
         moving, other_mu = self._other(other, other_link)
         if other_is_tyre:  # pybullet's mu of a tyre is 0; Gazebo takes the lesser of two
             other_mu = math.inf
         mu1, mu2 = min(tyre.mu1, other_mu), min(tyre.mu2, other_mu)
-        centre, linear, angular = state[0], state[6], state[7]
-        spin = _cross(angular, (point[0] - centre[0], point[1] - centre[1],
-                                point[2] - centre[2]))
-        velocity = [linear[i] + spin[i] for i in range(3)]
+        (cx, cy, cz), (vx, vy, vz), (wx, wy, wz) = state[0], state[6], state[7]
+        rx, ry, rz = px - cx, py - cy, pz - cz
+        vx += wy * rz - wz * ry  # the velocity of the tyre's material at the contact
+        vy += wz * rx - wx * rz
+        vz += wx * ry - wy * rx
         if moving:
-            theirs = point_velocity(client, other, other_link, point)
-            velocity = [velocity[i] - theirs[i] for i in range(3)]
-        along = _dot(velocity, normal)
-        slip = (velocity[0] - along * normal[0], velocity[1] - along * normal[1],
-                velocity[2] - along * normal[2])
-        speed = math.sqrt(_dot(slip, slip))
+            tx, ty, tz = point_velocity(client, other, other_link, (px, py, pz))
+            vx, vy, vz = vx - tx, vy - ty, vz - tz
+        along = vx * nx + vy * ny + vz * nz
+        sx, sy, sz = vx - along * nx, vy - along * ny, vz - along * nz
+        speed = math.sqrt(sx * sx + sy * sy + sz * sz)
         if speed == 0.0:
             return
         scale = load / max(speed, self.scales[link])
         if mu1 == mu2:
-            force = tuple(-mu1 * scale * s for s in slip)
+            factor = -mu1 * scale
+            force = (factor * sx, factor * sy, factor * sz)
         else:
-            first = self._first_direction(tyre, state[5], normal)
-            second = _cross(normal, first)
-            force = tuple(-scale * (mu1 * _dot(slip, first) * first[i]
-                                    + mu2 * _dot(slip, second) * second[i])
-                          for i in range(3))
+            slip = (sx, sy, sz)
+            first = self._first_direction(tyre, state[5], (nx, ny, nz))
+            second = _cross((nx, ny, nz), first)
+            a, b = mu1 * _dot(slip, first), mu2 * _dot(slip, second)
+            force = tuple(-scale * (a * first[i] + b * second[i]) for i in range(3))
+        point = (px, py, pz)
         pb.applyExternalForce(body, link, force, point, pb.WORLD_FRAME,
                               physicsClientId=client)
         if moving and not other_is_tyre:
-            pb.applyExternalForce(other, other_link, tuple(-f for f in force), point,
+            pb.applyExternalForce(other, other_link, (-force[0], -force[1], -force[2]), point,
                                   pb.WORLD_FRAME, physicsClientId=client)
 
     @staticmethod
