@@ -84,6 +84,9 @@ TARGETS = {
 
 
 def simulator_pid() -> Optional[int]:
+    """The simulator of this run's launch: its log goes under this run's ROS_HOME (other
+    simulators may run on the machine)."""
+    log_argument = f"__log:={os.environ['ROS_HOME']}/".encode()
     for entry in os.listdir("/proc"):
         if not entry.isdigit():
             continue
@@ -93,7 +96,8 @@ def simulator_pid() -> Optional[int]:
         except OSError:
             continue
         if any(part.endswith(b"gazebo_ros/gzserver") for part in command) and \
-                b"__name:=gazebo" in command:
+                b"__name:=gazebo" in command and \
+                any(part.startswith(log_argument) for part in command):
             return int(entry)
     return None
 
