@@ -3,9 +3,10 @@
 #   make          set up and build
 #   make demo     set up, then run the main demo (headless: prints a screenshot's path)
 #   make test     set up, then run every test tier; ends with "N passed, N failed"
+#   make fuzz-long set up, then the fuzz tier with many more random cases (FUZZ_LONG=1)
 #   make bench    set up, then measure sim_bridge's speed and memory (prints a table)
 #   make lint     catkin_lint -W2 on every package
-.PHONY: all setup demo test bench lint clean
+.PHONY: all setup demo test fuzz-long bench lint clean
 
 # Whatever python3 pyenv or conda put first, the workspace runs on the system interpreter.
 SHELL := /bin/bash
@@ -21,6 +22,9 @@ demo: setup
 
 test: setup
 	@$(RUN) python3 tools/run_tests.py
+
+fuzz-long: setup
+	@$(RUN) FUZZ_LONG=1 flock /tmp/sim.lock python3 tools/run_tests.py --tier fuzz
 
 bench: setup
 	@$(RUN) python3 tools/bench.py

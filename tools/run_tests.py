@@ -5,6 +5,8 @@ Tiers, in order (design.md, "Tests"):
   2. description pytest, no master:  <package>/test/description/, test/description/
   3. rostest    a real master each:  <package>/test/rostest/*.test and <package>/test/*.test
   4. e2e        as a user types it:  test/e2e/
+  5. fuzz       pytest + Hypothesis: <package>/test/fuzz/ (generated and mutated descriptions;
+                bounded for make test, FUZZ_LONG=1 for a long run: make fuzz-long)
 
 Counts come from the JUnit XML every runner writes (under test_results/), so a test
 case is a test case whichever runner ran it. A rostest file that fails without a result
@@ -28,7 +30,7 @@ from typing import List
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RESULTS = os.path.join(REPO, "test_results")
-TIERS = ("unit", "description", "rostest", "e2e")
+TIERS = ("unit", "description", "rostest", "e2e", "fuzz")
 # The longest a single rostest file may take, launch and tear-down included; each
 # <test> has its own, shorter time-limit.
 ROSTEST_TIMEOUT = 600
@@ -157,6 +159,9 @@ def main() -> int:
                                + [os.path.join(REPO, "test", "description")], args.keyword)
         elif tier == "rostest":
             tally = run_rostests(args.keyword)
+        elif tier == "fuzz":
+            tally = run_pytest(tier, [os.path.join(p, "test", "fuzz") for p in packages()],
+                               args.keyword)
         else:
             tally = run_pytest(tier, [os.path.join(REPO, "test", "e2e")], args.keyword)
         print(f"=== {tier}: {tally.passed} passed, {tally.failed} failed, {tally.skipped} "
