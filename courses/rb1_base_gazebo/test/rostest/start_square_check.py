@@ -100,11 +100,14 @@ class StartSquare(unittest.TestCase):
         after, (heading_after, _, _) = self.truth()
         self.command.publish(Twist())
         self.sim.unpause()
-        self.assertLess(abs(elapsed - 5.0), 0.05)
+        # the pause lands a few wall milliseconds after 5 s, which at full speed is up to a
+        # simulated second: the distance is judged against the time that really passed
+        self.assertGreaterEqual(elapsed, 5.0)
+        self.assertLess(elapsed, 7.0)
         dx, dy = after.x - before.x, after.y - before.y
         along = dx * math.cos(heading) + dy * math.sin(heading)
         sideways = -dx * math.sin(heading) + dy * math.cos(heading)
-        self.assertAlmostEqual(along, 1.0, delta=0.02)
+        self.assertAlmostEqual(along, forward.linear.x * elapsed, delta=0.02)
         self.assertLess(abs(sideways), 0.02)
         self.assertLess(abs(heading_after - heading), 0.02)
         # the wall ahead is 1 m nearer
