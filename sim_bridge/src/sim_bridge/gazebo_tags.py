@@ -94,9 +94,12 @@ class GazeboTags:
 
 def _float(text: str, what: str, source: str) -> float:
     try:
-        return float(text)
+        value = float(text)
     except ValueError:
         raise UrdfError(f"{source}: {what} '{text}' is not a number") from None
+    if not math.isfinite(value):  # a friction or stiffness of nan/inf breaks the physics
+        raise UrdfError(f"{source}: {what} '{text}' is not a finite number")
+    return value
 
 
 def _direction(text: str, what: str, source: str) -> Optional[Tuple[float, float, float]]:

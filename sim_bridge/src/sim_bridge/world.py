@@ -324,7 +324,9 @@ class World:
             raise SimError(f"a model named '{spec.name}' exists already; delete it or pick "
                            "another name")
         if position is not None:
-            roll_pitch_yaw = pb.getEulerFromQuaternion(list(orientation or (0, 0, 0, 1)))
+            orientation = _checked_state(position, orientation or (0, 0, 0, 1), (0, 0, 0),
+                                         (0, 0, 0))
+            roll_pitch_yaw = pb.getEulerFromQuaternion(list(orientation))
             spec.pose = (*position, *roll_pitch_yaw)
         pos, orn = pose6_to_position_quaternion(spec.pose)
         model = Model(spec.name, "static" if spec.static else "body", pos, orn, namespace, spec,

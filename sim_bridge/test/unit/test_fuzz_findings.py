@@ -90,3 +90,25 @@ def test_a_robot_with_a_100000_character_name_spawns():
                           timeout=120)
     assert done.returncode == 0, (done.returncode, done.stderr[-2000:])
     assert "spawned ['long']" in done.stdout
+
+
+def test_a_gazebo_value_that_is_not_finite_is_refused_naming_it():
+    """Found by the fuzz tier: <mu1>nan</mu1> was accepted and the robot's pose became
+    non-finite within ten steps."""
+    from sim_bridge.gazebo_tags import read_gazebo_tags
+    from urdf_tools.model import UrdfError, parse_urdf
+    robot = parse_urdf("""<robot name="r"><link name="base"><inertial><mass value="1"/>
+      <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+      <gazebo reference="base"><mu1>nan</mu1></gazebo></robot>""", "test robot")
+    with pytest.raises(UrdfError, match=r"<mu1> 'nan' is not a finite number"):
+        read_gazebo_tags(robot)
+
+
+def test_an_sdf_model_placed_at_a_position_that_is_not_finite_is_refused(world):
+    """Found by the fuzz tier: World.add_sdf_model took a NaN or 1e300 position as given."""
+    from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec
+    from sim_bridge.world import SimError
+    box = ModelSpec("box", False, links=[LinkSpec("link", collisions=[ShapeSpec("box", size=(1, 1, 1))])])
+    with pytest.raises(SimError, match="the position"):
+        world.add_sdf_model(box, (float("nan"), 0.0, 0.0))
+    assert "box" not in world.models
