@@ -6,7 +6,10 @@
 #   3. makes .venv from the system interpreter and installs tools/requirements.txt
 #      (again only when that file changed);
 #   4. builds the catkin workspace in .ws/ (the repository is linked as .ws/src/<repo>,
-#      the classic ~/catkin_ws/src/<repo> layout) with the system interpreter.
+#      the classic ~/catkin_ws/src/<repo> layout) with the system interpreter;
+#   5. builds the platform alone (sim_bridge, urdf_tools, node_params, compat/, courses/,
+#      course_grader; no course solution) into .ws/platform/, its own build and devel
+#      spaces: what course_grader overlays a student's submission on.
 #
 # Everything prints one line per step so that a second run shows that it did nothing.
 set -euo pipefail
@@ -104,5 +107,31 @@ if (cd "$ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE
 else
   tail -n 40 "$log" >&2
   echo "setup: catkin build failed; the whole log is $log" >&2
+  exit 1
+fi
+
+# --- 5. the platform alone ------------------------------------------------------------
+# Its own source space, .ws/platform/src, holding links to the platform's packages only
+# (catkin's devel space puts its source space on ROS_PACKAGE_PATH: with the whole
+# repository there, `rospack find my_rb1_ros` would still find ours), and its own build and
+# devel spaces. A platform package that depends on a course solution fails here.
+platform_ws="$ws/platform"
+mkdir -p "$platform_ws/src"
+platform_links=(sim_bridge urdf_tools node_params course_grader compat courses)
+for name in "${platform_links[@]}"; do
+  if [ -e "$repo/$name" ]; then
+    [ -L "$platform_ws/src/$name" ] || ln -s "../../../$name" "$platform_ws/src/$name"
+  else
+    rm -f "$platform_ws/src/$name"
+  fi
+done
+platform_count=$(find -L "$platform_ws/src" -name package.xml -not -path '*/test/*' | wc -l)
+platform_log="$platform_ws/catkin_make.log"
+if (cd "$platform_ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 \
+      -DCATKIN_ENABLE_TESTING=OFF >"$platform_log" 2>&1); then
+  echo "setup: platform build: ok ($platform_count packages, no course solution; log $platform_log)"
+else
+  tail -n 40 "$platform_log" >&2
+  echo "setup: platform build failed; the whole log is $platform_log" >&2
   exit 1
 fi
