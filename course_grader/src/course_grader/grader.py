@@ -1,0 +1,151 @@
+"""Grades one submission: stage and build it on the platform alone, then run each scenario
+of the guide in a fresh simulation (own master, own time limit), judge its items from the
+probe's ground-truth measurements, and add task 1's URDF checks as evidence."""
+from __future__ import annotations
+
+import os
+import time
+from typing import Callable, Dict, List, Optional
+
+from course_grader import ros_run, submission, urdf_checks
+from course_grader.course import Course
+from course_grader.results import Check, ItemResult, Report, failed_item, judge
+from urdf_tools import UrdfError
+
+PACKAGE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+REPO = os.path.dirname(PACKAGE_DIR)
+PLATFORM_SETUP = os.path.join(REPO, ".ws", "platform", "devel", "setup.bash")
+
+# which of the guide's commands each scenario runs, in order
+SCENARIO_COMMANDS = {"display": ["display"], "spawn": ["warehouse"], "drive": ["warehouse"],
+                     "scan": ["warehouse"], "rotate": ["warehouse", "rotate"]}
+# a topic that shows a command's launch is up before the next command is typed
+READY_TOPIC = {"warehouse": "/odom"}
+
+
+def _launch_args(env: Dict[str, str], package: str, launch_file: str) -> List[str]:
+    """gui:=false when the launch file has a gui argument (headless either way: no DISPLAY)."""
+    found = submission.sourced_find(env, package)
+    path = os.path.join(found, "launch", launch_file) if found else ""
+    return ["gui:=false"] if "gui" in ros_run.declared_args(path) else []
+
+
+def scenario_results(course: Course, scenario: str, env: Dict[str, str],
+                     log_dir: str) -> List[ItemResult]:
+    """Runs ``scenario`` in a fresh simulation; one result per item it judges."""
+    items = course.items_of(scenario)
+    started = time.monotonic()
+    limit = course.limits["scenario"]
+    names = []
+    try:
+        with ros_run.Session(env, log_dir, course.limits) as session:
+            session.start_master()
+            if scenario == "display":
+                session.start_display()
+            for key in SCENARIO_COMMANDS[scenario]:
+                package, launch_file = course.commands[key]
+                names.append(key)
+                session.launch(key, package, launch_file, _launch_args(env, package, launch_file))
+                if key in READY_TOPIC and key != SCENARIO_COMMANDS[scenario][-1]:
+                    session.wait_for_topic(READY_TOPIC[key], course.limits["startup"])
+            remaining = limit - (time.monotonic() - started)
+            answer = session.probe(scenario, course.source, max(1.0, remaining))
+            session.check_alive()
+            trouble = session.trouble(names)
+    except ros_run.RunError as error:
+        trouble = _trouble_after(log_dir, names)
+        seconds = time.monotonic() - started
+        return [failed_item(item, str(error), trouble, seconds) for item in items]
+    seconds = time.monotonic() - started
+    if "error" in answer:
+        return [failed_item(item, answer["error"], trouble, seconds) for item in items]
+    checks, notes = answer.get("checks", {}), answer.get("notes", {})
+    return [judge(item, [Check.from_dict(c) for c in checks.get(item.id, [])],
+                  notes.get(item.id, []), trouble, seconds) for item in items]
+
+
+def _trouble_after(log_dir: str, names: List[str]) -> List[str]:
+    lines: List[str] = []
+    for name in names + ["probe"]:
+        path = os.path.join(log_dir, f"{name}.log")
+        if os.path.isfile(path):
+            with open(path, encoding="utf-8", errors="replace") as log:
+                lines += [f"{name}: {line.rstrip()}" for line in log
+                          if ros_run.TROUBLE.search(line)][-ros_run.LOG_LINES:]
+    return lines
+
+
+def add_urdf_evidence(course: Course, results: List[ItemResult], description_dir: Optional[str]):
+    """Task 1's URDF checks: names and placements scored under the display item, the wheel
+    joints' type under the wheel item, sizes, mass, inertia and friction as notes."""
+    by_id = {r.item.id: r for r in results}
+    display, wheels = by_id.get("display_links_tf"), by_id.get("wheel_joints_move")
+    path = urdf_checks.find_urdf(description_dir, course.urdf["file"]) if description_dir else None
+    try:
+        if path is None:
+            raise UrdfError(f"no URDF in my_rb1_description (looked for {course.urdf['file']})")
+        model = urdf_checks.read(path)
+    except (UrdfError, OSError, RuntimeError) as error:
+        for result in (display, wheels):
+            if result is not None:
+                result.checks.append(Check("URDF readable", False, str(error)))
+                result.awarded = 0.0
+        return
+    if display is not None:
+        display.checks += [urdf_checks.names(model, course.urdf),
+                           *urdf_checks.placements(model, course.urdf)]
+        display.notes += [f"{'pass' if c.passed else 'FAIL'}: {c.evidence}"
+                          for c in urdf_checks.supporting(model, course.urdf)]
+    if wheels is not None:
+        wheels.checks.append(urdf_checks.wheel_joints(model, course.urdf))
+    for result in (display, wheels):
+        if result is not None:
+            result.awarded = judge(result.item, result.checks).awarded
+
+
+def grade(course: Course, path: str, out: str, platform_setup: str = PLATFORM_SETUP,
+          progress: Callable[[str], None] = lambda line: None,
+          scenarios: Optional[List[str]] = None) -> Report:
+    started = time.monotonic()
+    workspace = os.path.join(out, "workspace")
+    staged = submission.stage(path, course.packages, workspace)
+    report = Report(course, os.path.abspath(path), [])
+    if staged.revision:
+        report.notes.append(f"git commit graded: {staged.revision}")
+    if staged.missing:
+        report.notes.append(f"packages not found in the submission: {', '.join(staged.missing)}")
+    progress(f"staged {', '.join(staged.found) or 'nothing'} in {workspace}")
+    platform_env = submission.sourced(platform_setup, submission.clean_environment(dict(os.environ)))
+    built = submission.build(workspace, platform_env, course.limits["build"])
+    report.build = built.summary
+    progress(built.summary)
+    wanted = scenarios or course.scenarios()
+    if not built.ok:
+        report.results = [failed_item(item, built.summary, built.log_tail)
+                          for item in course.items if item.scenario in wanted]
+        report.seconds = time.monotonic() - started
+        return report
+    env = submission.sourced(os.path.join(workspace, "devel", "setup.bash"),
+                             submission.clean_environment(platform_env))
+    foreign = submission.resolves_inside(env, list(staged.found), workspace)
+    if foreign:
+        report.notes += foreign
+    for scenario in wanted:
+        items = course.items_of(scenario)
+        needed = {course.commands[key][0] for key in SCENARIO_COMMANDS[scenario]}
+        absent = sorted(needed & set(staged.missing))
+        if absent:
+            report.results += [failed_item(item, f"the submission has no {', '.join(absent)}")
+                               for item in items]
+            continue
+        progress(f"scenario {scenario}: {', '.join(i.id for i in items)}")
+        results = scenario_results(course, scenario, env, os.path.join(out, "logs", scenario))
+        progress(f"scenario {scenario}: {sum(r.awarded for r in results):g} of "
+                 f"{sum(r.item.points for r in results):g} in {results[0].seconds:.0f} s")
+        report.results += results
+    add_urdf_evidence(course, report.results, staged.found.get("my_rb1_description") and
+                      os.path.join(workspace, "src", "my_rb1_description"))
+    order = {item.id: index for index, item in enumerate(course.items)}
+    report.results.sort(key=lambda r: order[r.item.id])
+    report.seconds = time.monotonic() - started
+    return report

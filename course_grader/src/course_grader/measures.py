@@ -1,0 +1,78 @@
+"""Figures computed from ground-truth samples, without ROS: heading unwrapped across ±180°,
+when a turn stopped, whether the robot is still, tilt, and whether a point lies in a
+rectangle. The probes feed them what the simulator reports."""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import List, Optional, Sequence, Tuple
+
+Sample = Tuple[float, float]   # (simulated time s, yaw rad)
+
+
+def yaw_of(x: float, y: float, z: float, w: float) -> float:
+    return math.atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z))
+
+
+def tilt_degrees(x: float, y: float, z: float, w: float) -> float:
+    """Angle between the body's z axis and the vertical."""
+    cos_tilt = max(-1.0, min(1.0, 1.0 - 2.0 * (x * x + y * y)))
+    return math.degrees(math.acos(cos_tilt))
+
+
+def unwrap(previous: Optional[float], yaw: float) -> float:
+    """``yaw`` shifted by whole turns to lie within half a turn of ``previous``."""
+    if previous is None:
+        return yaw
+    return previous + math.remainder(yaw - previous, 2.0 * math.pi)
+
+
+def inside(value: float, bounds: Sequence[float]) -> bool:
+    return bounds[0] <= value <= bounds[1]
+
+
+def is_still(samples: List[Sample], window: float, speed: float) -> bool:
+    """The yaw changed by less than ``speed`` x ``window`` over the last ``window`` seconds
+    (and the samples span that long)."""
+    if not samples or samples[-1][0] - samples[0][0] < window:
+        return False
+    end = samples[-1][0]
+    recent = [yaw for t, yaw in samples if t >= end - window]
+    return max(recent) - min(recent) <= speed * window
+
+
+def stop_time(samples: List[Sample], band: float) -> float:
+    """The first time from which the yaw stays within ``band`` (rad) of its last value."""
+    final = samples[-1][1]
+    stopped = samples[-1][0]
+    for t, yaw in reversed(samples):
+        if abs(yaw - final) > band:
+            break
+        stopped = t
+    return stopped
+
+
+@dataclass
+class Rotation:
+    """One /rotate_robot call as measured in ground truth."""
+
+    requested: float          # degrees
+    turned: float             # degrees, true yaw change (counter-clockwise positive)
+    answer: str
+    answered_at: float        # simulated s
+    stopped_at: float         # simulated s, when the true yaw stopped changing
+
+    def error(self) -> float:
+        return self.turned - self.requested
+
+    def turned_ok(self, tolerance: float) -> bool:
+        return abs(self.error()) <= tolerance
+
+    def says_success(self) -> bool:
+        text = self.answer.lower()
+        return "success" in text and "fail" not in text
+
+    def answered_when_done(self, tolerance: float, lag: float) -> bool:
+        """Success claimed, the turn really done, and not before the robot stopped."""
+        return (self.says_success() and self.turned_ok(tolerance)
+                and self.answered_at >= self.stopped_at - lag)

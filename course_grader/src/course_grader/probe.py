@@ -1,0 +1,260 @@
+"""The measuring side of a scenario, run as ``python3 -m course_grader.probe SCENARIO
+COURSE_YAML`` in a child process against that scenario's master (rospy can join one
+master per process). It prints one JSON line: ``{"checks": {item: [check...]},
+"notes": {item: [text...]}}`` or ``{"error": text}``. Every wait is bounded."""
+from __future__ import annotations
+
+import json
+import math
+import sys
+import threading
+import traceback
+from typing import Callable, Dict, List
+
+import rospy
+
+from course_grader import course as course_file
+from course_grader.probe_tools import (ProbeError, check, publishers_of, robot_description,
+                                       subscribers_of, wait_until)
+from course_grader.measures import (Rotation, inside, is_still, stop_time, tilt_degrees,
+                                    unwrap, yaw_of)
+
+# --- the simulator ---------------------------------------------------------------------
+
+
+class Truth:
+    """The simulator's /gazebo interface: which model is the robot, its pose, the time."""
+
+    def __init__(self, timeout: float):
+        from gazebo_msgs.srv import GetModelProperties, GetModelState, GetWorldProperties
+        for name in ("get_world_properties", "get_model_properties", "get_model_state"):
+            rospy.wait_for_service(f"/gazebo/{name}", timeout=timeout)
+        self.world = rospy.ServiceProxy("/gazebo/get_world_properties", GetWorldProperties)
+        self.properties = rospy.ServiceProxy("/gazebo/get_model_properties", GetModelProperties)
+        self.state = rospy.ServiceProxy("/gazebo/get_model_state", GetModelState)
+        self.timeout = timeout
+        self.model = ""
+
+    def sim_time(self) -> float:
+        return self.world().sim_time
+
+    def find_robot(self, joints: List[str]) -> str:
+        """The spawned model whose joints are robot_description's (the student names it)."""
+        def robot():
+            best, overlap = "", 0
+            for name in self.world().model_names:
+                shared = len(set(self.properties(name).joint_names) & set(joints))
+                if shared > overlap:
+                    best, overlap = name, shared
+            return best
+        self.model = wait_until(robot, self.timeout,
+                                f"a model with the joints {joints} to be spawned")
+        return self.model
+
+    def pose(self):
+        state = self.state(self.model, "")
+        if not state.success:
+            raise ProbeError(f"/gazebo/get_model_state '{self.model}': {state.status_message}")
+        return state.pose
+
+    def wait_sim(self, seconds: float, what: str) -> float:
+        target = self.sim_time() + seconds
+        wall = seconds * 10 + self.timeout   # the simulator may run slower than real time
+        wait_until(lambda: self.sim_time() >= target, wall, what)
+        return target
+
+
+def _movable_joints(timeout: float) -> List[str]:
+    model = robot_description(timeout)
+    return [j.name for j in model.joints.values() if j.movable] or list(model.joints)
+
+
+def spawn(course) -> Dict:
+    spec, limit = course.checks["spawn"], course.limits["startup"]
+    truth = Truth(limit)
+    model = truth.find_robot(_movable_joints(limit))
+    truth.wait_sim(spec["settle"], f"{spec['settle']} s of simulated time after the spawn")
+    pose = truth.pose()
+    p, q = pose.position, pose.orientation
+    tilt = tilt_degrees(q.x, q.y, q.z, q.w)
+    in_square = inside(p.x, spec["square_x"]) and inside(p.y, spec["square_y"])
+    worlds = truth.world().model_names
+    return {"checks": {"spawn_in_start_square": [
+        check("inside the start square", in_square,
+              f"'{model}' at ({p.x:.3f}, {p.y:.3f}) m; the square is x {spec['square_x']}, "
+              f"y {spec['square_y']}"),
+        check("standing", tilt <= spec["max_tilt"], f"tilted {tilt:.1f} deg (at most {spec['max_tilt']:g})"),
+    ]}, "notes": {"spawn_in_start_square": [
+        f"world models: {', '.join(sorted(set(worlds) - {model}))}"]}}
+
+
+def drive(course) -> Dict:
+    from geometry_msgs.msg import Twist
+    spec, limit = course.checks["drive"], course.limits["startup"]
+    truth = Truth(limit)
+    truth.find_robot(_movable_joints(limit))
+    publisher = rospy.Publisher("/cmd_vel", Twist, queue_size=1)
+    wait_until(lambda: publisher.get_num_connections() > 0, limit, "a subscriber of /cmd_vel")
+    start = truth.pose().position
+    command = Twist()
+    command.linear.x = spec["speed"]
+    began = truth.sim_time()
+    target = began + spec["duration"]
+
+    def driven():
+        publisher.publish(command)
+        return truth.sim_time() >= target
+    wait_until(driven, spec["duration"] * 10 + limit, f"{spec['duration']} s of simulated time")
+    end = truth.pose().position
+    publisher.publish(Twist())
+    moved = math.hypot(end.x - start.x, end.y - start.y)
+    return {"checks": {"cmd_vel_moves": [check(
+        "moves on /cmd_vel", moved >= spec["min_distance"],
+        f"moved {moved:.3f} m in truth in {truth.sim_time() - began:.1f} s at "
+        f"{spec['speed']:g} m/s on /cmd_vel (at least {spec['min_distance']:g})")]}}
+
+
+def scan(course) -> Dict:
+    from sensor_msgs.msg import LaserScan
+    spec = course.checks["scan"]
+    try:
+        message = rospy.wait_for_message("/scan", LaserScan, timeout=spec["timeout"])
+    except rospy.ROSException:
+        return {"checks": {"scan_readable": [check(
+            "a LaserScan on /scan", False,
+            f"no LaserScan on /scan within {spec['timeout']:g} s "
+            f"(publishers: {publishers_of('/scan') or 'none'})")]}}
+    ranges = list(message.ranges)
+    valid = [r for r in ranges if math.isfinite(r) and message.range_min <= r <= message.range_max]
+    fraction = len(valid) / len(ranges) if ranges else 0.0
+    return {"checks": {"scan_readable": [check(
+        "a LaserScan on /scan with ranges", bool(ranges) and fraction >= spec["min_finite_fraction"],
+        f"{len(ranges)} beams in frame '{message.header.frame_id}', {100 * fraction:.0f}% in "
+        f"[{message.range_min:g}, {message.range_max:g}] m"
+        + (f", nearest {min(valid):.2f} m" if valid else ""))]}}
+
+
+class YawRecorder:
+    """The robot's true heading from /gazebo/model_states, unwrapped, against sim time."""
+
+    def __init__(self, model: str):
+        from gazebo_msgs.msg import ModelStates
+        self.model = model
+        self.samples = []
+        self.lock = threading.Lock()
+        self.subscriber = rospy.Subscriber("/gazebo/model_states", ModelStates, self._on_states,
+                                           queue_size=10)
+
+    def _on_states(self, message) -> None:
+        if self.model not in message.name:
+            return
+        q = message.pose[message.name.index(self.model)].orientation
+        now = rospy.get_time()
+        with self.lock:
+            previous = self.samples[-1][1] if self.samples else None
+            self.samples.append((now, unwrap(previous, yaw_of(q.x, q.y, q.z, q.w))))
+
+    def since(self, start: float):
+        with self.lock:
+            return [s for s in self.samples if s[0] >= start]
+
+    def latest(self):
+        with self.lock:
+            return self.samples[-1] if self.samples else None
+
+
+def rotate(course) -> Dict:
+    import rosservice
+    spec, limit = course.checks["rotate"], course.limits["startup"]
+    truth = Truth(limit)
+    model = truth.find_robot(_movable_joints(limit))
+    recorder = YawRecorder(model)
+    wait_until(recorder.latest, limit, "/gazebo/model_states with the robot")
+    rospy.wait_for_service("/rotate_robot", timeout=limit)
+    node = rosservice.get_service_node("/rotate_robot")
+    odom_subscribers = subscribers_of(spec["odom_topic"])
+    uses_odom = node in odom_subscribers
+    service_class = rosservice.get_service_class_by_name("/rotate_robot")
+    proxy = rospy.ServiceProxy("/rotate_robot", service_class)
+
+    def still(since):
+        return is_still(recorder.since(since), spec["still_window"], spec["still_speed"])
+
+    rotations: List[Rotation] = []
+    failures: List[str] = []
+    for degrees in spec["requests"]:
+        now = rospy.get_time()
+        wait_until(lambda: still(now), limit, "the robot to be still before the request")
+        began, yaw0 = recorder.latest()
+        answer: Dict = {}
+
+        def call():
+            try:
+                answer["response"] = proxy(degrees=int(degrees))
+            except Exception as error:  # pylint: disable=broad-except
+                answer["error"] = f"{type(error).__name__}: {error}"
+            answer["at"] = rospy.get_time()
+        worker = threading.Thread(target=call, daemon=True)
+        worker.start()
+        worker.join(spec["call_timeout"])
+        if "at" not in answer:
+            failures.append(f"rotate {degrees}: no answer within {spec['call_timeout']:g} s")
+            answer.update(at=float("inf"), error="no answer")
+        response = answer.get("response")
+        text = (getattr(response, "result", None) if response is not None else None)
+        text = str(text if text is not None else (response or answer.get("error", "")))
+        after = min(answer["at"], rospy.get_time())
+        wait_until(lambda: still(after), limit, f"the robot to stop after rotate {degrees}")
+        samples = recorder.since(began)
+        rotations.append(Rotation(
+            requested=float(degrees), turned=math.degrees(samples[-1][1] - yaw0),
+            answer=text.strip(), answered_at=answer["at"],
+            stopped_at=stop_time(samples, math.radians(spec["stopped_band"]))))
+
+    def describe(r: Rotation) -> str:
+        return (f"asked {r.requested:+.0f}: turned {r.turned:+.1f} deg in truth, answer "
+                f"'{r.answer[:60]}' {r.answered_at - r.stopped_at:+.2f} s after it stopped")
+    degrees_ok = [check(f"rotate {r.requested:+.0f}", r.turned_ok(spec["tolerance"]),
+                        f"asked {r.requested:+.0f} deg, turned {r.turned:+.1f} in truth "
+                        f"(within {spec['tolerance']:g})") for r in rotations]
+    success_ok = [check(f"answer to {r.requested:+.0f}",
+                        r.answered_when_done(spec["tolerance"], spec["answer_lag"]), describe(r))
+                  for r in rotations]
+    return {"checks": {
+        "rotate_degrees": degrees_ok,
+        "rotate_uses_odom": [check(f"subscribes to {spec['odom_topic']}", uses_odom,
+                                   f"{node} (serves /rotate_robot) "
+                                   f"{'is' if uses_odom else 'is not'} among the subscribers of "
+                                   f"{spec['odom_topic']}: {odom_subscribers or 'none'}")],
+        "rotate_answers_success": success_ok,
+    }, "notes": {"rotate_degrees": failures}}
+
+
+# --- display.launch (task 1) -------------------------------------------------------------
+
+
+def display(course) -> Dict:
+    from course_grader.display_probe import measure
+    return measure(course)
+
+
+SCENARIOS = {"display": display, "spawn": spawn, "drive": drive, "scan": scan,
+             "rotate": rotate}
+
+
+def main(argv=None) -> int:
+    argv = sys.argv[1:] if argv is None else argv
+    scenario, config_path = argv[0], argv[1]
+    rospy.init_node("course_grader_probe", anonymous=True, disable_signals=True)
+    try:
+        answer = SCENARIOS[scenario](course_file.parse(config_path))
+    except Exception as error:  # pylint: disable=broad-except
+        traceback.print_exc()
+        answer = {"error": f"{type(error).__name__}: {error}"}
+    print(json.dumps(answer), flush=True)
+    rospy.signal_shutdown("done")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

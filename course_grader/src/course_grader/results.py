@@ -1,0 +1,94 @@
+"""What grading found: each item's points awarded, the figure measured (evidence) and, on
+a failure, the log lines that explain it; totals. No ROS here."""
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field
+from typing import Dict, Iterable, List, Optional
+
+from course_grader.course import Course, Item
+
+
+@dataclass
+class Check:
+    """One measured condition: passed or not, and what was measured (one line)."""
+
+    name: str
+    passed: bool
+    evidence: str
+
+    @staticmethod
+    def from_dict(data: Dict) -> "Check":
+        return Check(str(data["name"]), bool(data["passed"]), str(data["evidence"]))
+
+
+@dataclass
+class ItemResult:
+    item: Item
+    awarded: float
+    checks: List[Check] = field(default_factory=list)
+    notes: List[str] = field(default_factory=list)   # supporting evidence, not scored
+    log: List[str] = field(default_factory=list)     # lines explaining a failure
+    seconds: float = 0.0                             # wall time of the scenario
+
+    @property
+    def passed(self) -> bool:
+        return self.awarded >= self.item.points
+
+    def evidence(self) -> str:
+        return "; ".join(c.evidence for c in self.checks) or "not measured"
+
+
+def judge(item: Item, checks: Iterable[Check], notes: Iterable[str] = (),
+          log: Iterable[str] = (), seconds: float = 0.0) -> ItemResult:
+    """All-or-nothing: the item's points when it has checks and every one passed."""
+    checks = list(checks)
+    awarded = item.points if checks and all(c.passed for c in checks) else 0.0
+    failed = awarded < item.points
+    return ItemResult(item, awarded, checks, list(notes), list(log) if failed else [], seconds)
+
+
+def failed_item(item: Item, reason: str, log: Iterable[str] = (),
+                seconds: float = 0.0) -> ItemResult:
+    """An item that could not be measured (no build, no launch): 0 points, the reason."""
+    return ItemResult(item, 0.0, [Check("ran", False, reason)], [], list(log), seconds)
+
+
+@dataclass
+class Report:
+    course: Course
+    submission: str
+    results: List[ItemResult]
+    build: Optional[str] = None      # one line on the submission's build
+    seconds: float = 0.0             # wall time of the whole grading
+    notes: List[str] = field(default_factory=list)
+
+    @property
+    def awarded(self) -> float:
+        return sum(r.awarded for r in self.results)
+
+    @property
+    def possible(self) -> float:
+        return sum(r.item.points for r in self.results)
+
+    def result(self, item_id: str) -> ItemResult:
+        for result in self.results:
+            if result.item.id == item_id:
+                return result
+        raise KeyError(item_id)
+
+    def to_dict(self) -> Dict:
+        return {
+            "course": self.course.name,
+            "submission": self.submission,
+            "awarded": round(self.awarded, 4),
+            "possible": round(self.possible, 4),
+            "seconds": round(self.seconds, 1),
+            "build": self.build,
+            "notes": self.notes,
+            "items": [{
+                "id": r.item.id, "task": r.item.task, "title": r.item.title,
+                "points": r.item.points, "awarded": r.awarded, "evidence": r.evidence(),
+                "checks": [asdict(c) for c in r.checks], "notes": r.notes, "log": r.log,
+                "seconds": round(r.seconds, 1),
+            } for r in self.results],
+        }

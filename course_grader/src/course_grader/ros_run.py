@@ -1,0 +1,185 @@
+"""One scenario's processes: a fresh ``roscore`` on a free port, the guide's launch files,
+an optional virtual display, and the probe that measures; every wait bounded, every
+process stopped (its whole process group) at the end, logs kept per scenario."""
+from __future__ import annotations
+
+import json
+import os
+import re
+import signal
+import socket
+import subprocess
+import time
+import xml.etree.ElementTree as ET
+from typing import Dict, List, Optional
+
+import rosgraph
+
+PYTHON = "/usr/bin/python3"   # the system interpreter, where ROS lives
+POLL = 0.1                # s between looks at a condition
+LOG_LINES = 12            # lines of a launch's log kept to explain a failure
+# lines of a log that explain a failure
+TROUBLE = re.compile(r"\berror|fatal|traceback|exception|failed|not found|process has died|"
+                     r"refus", re.IGNORECASE)
+
+
+class RunError(RuntimeError):
+    """A scenario could not be run (master, launch or probe); the message says which."""
+
+
+def free_port() -> int:
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        return sock.getsockname()[1]
+
+
+def wait_until(condition, timeout: float, what: str):
+    deadline = time.monotonic() + timeout
+    while True:
+        result = condition()
+        if result:
+            return result
+        if time.monotonic() > deadline:
+            raise RunError(f"timed out after {timeout:.0f} s waiting for {what}")
+        time.sleep(POLL)
+
+
+def declared_args(launch_file: str) -> List[str]:
+    """The arguments a launch file lets the command line set (top-level ``<arg>`` without
+    ``value``)."""
+    try:
+        root = ET.parse(launch_file).getroot()
+    except (ET.ParseError, OSError):
+        return []
+    return [arg.get("name") for arg in root.findall("arg") if arg.get("value") is None]
+
+
+class Session:
+    """Processes of one scenario; use as a context manager (everything stops on exit)."""
+
+    def __init__(self, env: Dict[str, str], log_dir: str, limits: Dict[str, float]):
+        self.log_dir = log_dir
+        self.limits = limits
+        os.makedirs(log_dir, exist_ok=True)
+        self.port = free_port()
+        self.master_uri = f"http://127.0.0.1:{self.port}"
+        self.env = dict(env, ROS_MASTER_URI=self.master_uri, ROS_HOME=os.path.join(log_dir, "ros"),
+                        ROS_LOG_DIR=os.path.join(log_dir, "ros", "log"), PYTHONUNBUFFERED="1")
+        self.env.pop("DISPLAY", None)
+        self.processes: List[tuple] = []   # (name, Popen, log path)
+
+    def __enter__(self) -> "Session":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.stop()
+
+    def _start(self, name: str, command: List[str]) -> subprocess.Popen:
+        log_path = os.path.join(self.log_dir, f"{name}.log")
+        log = open(log_path, "w", encoding="utf-8")  # pylint: disable=consider-using-with
+        process = subprocess.Popen(command, env=self.env, stdout=log, stderr=subprocess.STDOUT,
+                                   stdin=subprocess.DEVNULL, start_new_session=True)
+        log.close()
+        self.processes.append((name, process, log_path))
+        return process
+
+    def start_master(self) -> None:
+        self._start("roscore", ["roscore", "-p", str(self.port)])
+        master = rosgraph.Master("/course_grader", master_uri=self.master_uri)
+
+        def answers():
+            try:
+                master.getPid()
+                return True
+            except Exception:  # pylint: disable=broad-except
+                return False
+        wait_until(answers, self.limits["startup"], f"roscore on port {self.port}")
+
+    def start_display(self) -> None:
+        """A virtual screen (Xvfb) for windows the guide's launch opens (rviz, sliders)."""
+        read_fd, write_fd = os.pipe()
+        log_path = os.path.join(self.log_dir, "xvfb.log")
+        with open(log_path, "w", encoding="utf-8") as log:
+            process = subprocess.Popen(["Xvfb", "-displayfd", str(write_fd), "-screen", "0",
+                                        "1280x1024x24", "-nolisten", "tcp"],
+                                       stdout=log, stderr=subprocess.STDOUT, pass_fds=(write_fd,),
+                                       start_new_session=True)
+        os.close(write_fd)
+        self.processes.append(("xvfb", process, log_path))
+        with os.fdopen(read_fd) as pipe:   # Xvfb writes its number once it accepts clients
+            number = pipe.readline().strip()
+        if not number:
+            raise RunError(f"Xvfb did not start (see {log_path})")
+        self.env.update(DISPLAY=f":{number}", LIBGL_ALWAYS_SOFTWARE="1")
+
+    def launch(self, name: str, package: str, launch_file: str, args: List[str]) -> None:
+        self._start(name, ["roslaunch", "--wait", package, launch_file, *args])
+
+    def master(self) -> rosgraph.Master:
+        return rosgraph.Master("/course_grader", master_uri=self.master_uri)
+
+    def wait_for_topic(self, topic: str, timeout: float) -> None:
+        def published():
+            self.check_alive()
+            try:
+                return any(name == topic for name, _ in self.master().getPublishedTopics(""))
+            except Exception:  # pylint: disable=broad-except
+                return False
+        wait_until(published, timeout, f"a publisher of {topic}")
+
+    def check_alive(self) -> None:
+        for name, process, log_path in self.processes:
+            if process.poll() is not None:
+                raise RunError(f"'{name}' ended (exit status {process.returncode}) "
+                               f"before the checks; see {log_path}")
+
+    def probe(self, scenario: str, config_path: str, timeout: float) -> Dict:
+        """Runs ``python3 -m course_grader.probe`` against this master; its JSON answer."""
+        log_path = os.path.join(self.log_dir, "probe.log")
+        command = [PYTHON, "-m", "course_grader.probe", scenario, config_path]
+        with open(log_path, "w", encoding="utf-8") as log:
+            try:
+                done = subprocess.run(command, env=self.env, stdout=subprocess.PIPE, stderr=log,
+                                      timeout=timeout, check=False, text=True)
+            except subprocess.TimeoutExpired as error:
+                raise RunError(f"the checks did not finish within {timeout:.0f} s "
+                               f"(see {log_path})") from error
+        lines = [line for line in done.stdout.splitlines() if line.startswith("{")]
+        if not lines:
+            raise RunError(f"the checks ended without an answer (exit status "
+                           f"{done.returncode}; see {log_path})")
+        return json.loads(lines[-1])
+
+    def stop(self) -> None:
+        """SIGINT to every process group (launches first, roscore last), then SIGKILL."""
+        for _, process, _ in reversed(self.processes):
+            if process.poll() is None:
+                try:
+                    os.killpg(process.pid, signal.SIGINT)
+                except ProcessLookupError:
+                    pass
+        deadline = time.monotonic() + self.limits["stop"]
+        for _, process, _ in reversed(self.processes):
+            try:
+                process.wait(max(0.0, deadline - time.monotonic()))
+            except subprocess.TimeoutExpired:
+                pass
+            try:
+                os.killpg(process.pid, signal.SIGKILL)
+            except (ProcessLookupError, PermissionError):
+                pass
+            process.wait()
+
+    def trouble(self, names: Optional[List[str]] = None) -> List[str]:
+        """The lines of the launches' logs that explain a failure (errors, tracebacks)."""
+        found: List[str] = []
+        for name, _, log_path in self.processes:
+            if names is not None and name not in names:
+                continue
+            try:
+                with open(log_path, encoding="utf-8", errors="replace") as log:
+                    lines = [line.rstrip() for line in log]
+            except OSError:
+                continue
+            found += [f"{name}: {line}" for line in lines if TROUBLE.search(line)][-LOG_LINES:]
+        return found

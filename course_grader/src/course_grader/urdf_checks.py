@@ -1,0 +1,167 @@
+"""Task 1's requirements read from the submission's URDF, without a master: link and joint
+names, where the wheels, casters and laser are (the laser upside down), and as supporting
+evidence the body's and wheels' sizes, 25 kg in all, each inertia against its shape's
+formula and the casters' friction."""
+from __future__ import annotations
+
+import glob
+import math
+import os
+from typing import Dict, List, Optional, Tuple
+
+import numpy as np
+
+from course_grader.results import Check
+from urdf_tools import UrdfError, inertia, load_urdf
+from urdf_tools.kinematics import link_transform, matrix_rpy
+from urdf_tools.model import RobotModel
+from urdf_tools.xacro_loader import load as load_xacro
+
+
+def find_urdf(package_dir: str, relative: str) -> Optional[str]:
+    """The guide's file, else the one .urdf or .xacro under ``urdf/``."""
+    wanted = os.path.join(package_dir, relative)
+    if os.path.isfile(wanted):
+        return wanted
+    found = sorted(glob.glob(os.path.join(package_dir, "urdf", "*.urdf")) +
+                   glob.glob(os.path.join(package_dir, "urdf", "*.xacro")))
+    return found[0] if found else None
+
+
+def read(path: str) -> RobotModel:
+    return load_xacro(path) if path.endswith(".xacro") else load_urdf(path)
+
+
+def _close(a, b, tolerance: float) -> bool:
+    return bool(np.allclose(np.asarray(a, float), np.asarray(b, float), rtol=tolerance,
+                            atol=tolerance))
+
+
+def _fmt(values) -> str:
+    return "(" + ", ".join(f"{v:.4g}" for v in values) + ")"
+
+
+def names(model: RobotModel, spec: Dict) -> Check:
+    missing_links = [n for n in spec["links"] if n not in model.links]
+    missing_joints = [n for n in spec["joints"] if n not in model.joints]
+    if not missing_links and not missing_joints:
+        return Check("link and joint names", True,
+                     f"{len(spec['links'])} links and {len(spec['joints'])} joints named as the guide")
+    return Check("link and joint names", False,
+                 f"missing links {missing_links}, joints {missing_joints}")
+
+
+def _offset(model: RobotModel, parent: str, link: str) -> Optional[np.ndarray]:
+    try:
+        return link_transform(model, parent, link)
+    except (UrdfError, KeyError):
+        return None
+
+
+def placements(model: RobotModel, spec: Dict) -> List[Check]:
+    """Wheels, casters and laser where the guide puts them (from base_link), the laser
+    rolled upside down, base_link the right height above base_footprint."""
+    tolerance = spec["tolerance"]
+    checks = []
+    body = spec["body"]["link"]
+    wanted: List[Tuple[str, List[float]]] = list(spec["positions"].items())
+    wanted.append((spec["laser"]["link"], spec["laser"]["xyz"]))
+    for link, xyz in wanted:
+        transform = _offset(model, body, link) if link in model.links else None
+        if transform is None:
+            checks.append(Check(f"{link} position", False, f"{link}: not below {body}"))
+            continue
+        at = transform[:3, 3]
+        checks.append(Check(f"{link} position", _close(at, xyz, tolerance),
+                            f"{link} at {_fmt(at)} m (guide {_fmt(xyz)})"))
+    laser = _offset(model, body, spec["laser"]["link"]) if spec["laser"]["link"] in model.links else None
+    if laser is not None:
+        roll = math.degrees(abs(matrix_rpy(laser[:3, :3])[0]))
+        upside_down = abs(laser[2, 2] + 1.0) < tolerance   # the laser's z points down
+        checks.append(Check("laser upside down", upside_down,
+                            f"laser roll {roll:.1f} deg (guide {spec['laser']['roll']:g})"))
+    footprint = _offset(model, "base_footprint", body) if body in model.links and \
+        "base_footprint" in model.links else None
+    if footprint is not None:
+        height = footprint[2, 3]
+        checks.append(Check("base_link height", _close(height, spec["footprint_height"], tolerance),
+                            f"base_link {height:.4g} m above base_footprint "
+                            f"(guide {spec['footprint_height']:g})"))
+    return checks
+
+
+def _only_geometry(model: RobotModel, link: str):
+    shapes = model.links[link].collisions or model.links[link].visuals
+    return shapes[0] if shapes else None
+
+
+def _formula(link, shape) -> Optional[Tuple[float, float, float]]:
+    geometry, mass = shape.geometry, link.inertial.mass
+    if geometry.kind == "sphere":
+        return inertia.solid_sphere(mass, geometry.radius)
+    if geometry.kind == "cylinder":
+        roll, pitch = shape.origin.rpy[0], shape.origin.rpy[1]
+        axis = "y" if abs(abs(roll) - math.pi / 2) < 1e-3 else (
+            "x" if abs(abs(pitch) - math.pi / 2) < 1e-3 else "z")
+        return inertia.solid_cylinder(mass, geometry.radius, geometry.length, axis)
+    if geometry.kind == "box":
+        return inertia.solid_box(mass, *geometry.size)
+    return None
+
+
+def supporting(model: RobotModel, spec: Dict) -> List[Check]:
+    """Sizes, mass, inertia formulas, caster friction: evidence beside the items."""
+    tolerance = spec["tolerance"]
+    checks = []
+    body = spec["body"]
+    shape = _only_geometry(model, body["link"]) if body["link"] in model.links else None
+    if shape is not None and shape.geometry.kind == "cylinder":
+        size = (2 * shape.geometry.radius, shape.geometry.length)
+        checks.append(Check("body size", _close(size, (body["diameter"], body["height"]), tolerance),
+                            f"body cylinder {size[0]:.4g} m wide, {size[1]:.4g} m tall "
+                            f"(guide {body['diameter']:g} x {body['height']:g})"))
+    else:
+        checks.append(Check("body size", False, f"{body['link']} is not a cylinder"))
+    for wheel in spec["wheels"]["links"]:
+        shape = _only_geometry(model, wheel) if wheel in model.links else None
+        ok = shape is not None and shape.geometry.kind == "cylinder"
+        diameter = 2 * shape.geometry.radius if ok else float("nan")
+        checks.append(Check(f"{wheel} diameter", ok and _close(diameter, spec["wheels"]["diameter"], tolerance),
+                            f"{wheel} {diameter:.4g} m across (guide {spec['wheels']['diameter']:g})"))
+    mass = model.total_mass()
+    checks.append(Check("total mass", _close(mass, spec["total_mass"], tolerance),
+                        f"{mass:.4g} kg in all (guide {spec['total_mass']:g})"))
+    wrong = []
+    for link in model.links.values():
+        shape = _only_geometry(model, link.name)
+        if link.inertial is None or shape is None:
+            continue
+        expected = _formula(link, shape)
+        got = (link.inertial.ixx, link.inertial.iyy, link.inertial.izz)
+        if expected is None or not np.allclose(got, expected, rtol=spec["inertia_tolerance"],
+                                               atol=1e-12):
+            wrong.append(f"{link.name} {_fmt(got)} vs {_fmt(expected) if expected else 'no formula'}")
+    checks.append(Check("inertia formulas", not wrong,
+                        "every inertia equals its shape's formula" if not wrong
+                        else "inertia off: " + "; ".join(wrong)))
+    for caster in spec["casters"]["links"]:
+        props = model.gazebo_properties(caster) if caster in model.links else {}
+        mu = (props.get("mu1"), props.get("mu2"))
+        try:
+            ok = all(float(v) == spec["casters"]["friction"] for v in mu)
+        except (TypeError, ValueError):
+            ok = False
+        checks.append(Check(f"{caster} friction", ok, f"{caster} mu1 {mu[0]}, mu2 {mu[1]} "
+                                                       f"(guide {spec['casters']['friction']:g})"))
+    return checks
+
+
+def wheel_joints(model: RobotModel, spec: Dict) -> Check:
+    """The wheels' joints turn (continuous or revolute)."""
+    kinds = {}
+    for wheel in spec["wheels"]["links"]:
+        joint = model.parent_joint(wheel) if wheel in model.links else None
+        kinds[wheel] = (joint.name, joint.type) if joint else (None, "missing")
+    ok = all(kind in ("continuous", "revolute") for _, kind in kinds.values())
+    return Check("wheel joints movable", ok,
+                 ", ".join(f"{name or wheel} {kind}" for wheel, (name, kind) in kinds.items()))
