@@ -15,17 +15,21 @@ tyre is set to 0. Each step, before pybullet's, for every contact point of a tyr
 (normal force from pybullet's last step): the sliding velocity of the tyre's surface
 against the other body at that point, in the contact plane, and a force against it,
 
-    F = -N * M * s / max(|s|, slip_scale),   M = mu1 along fdir1, mu2 across it,
+    F = -min(N * M * s / |s|,  k * s),   M = mu1 along fdir1, mu2 across it,
 
 at the contact point (the other body gets the opposite force when it moves). With
 mu1 = mu2 this is Coulomb's isotropic cone: it depends on nothing but the contact, so a
-robot behaves the same at every heading (tested at 0, 30, 45 and 90 degrees). Below
-``slip_scale`` the force grows linearly with the slip, which is what keeps an explicit
-force stable at the simulator's step: a tyre under steady load creeps at a few mm/s where
-a rigid model would stick (measured on the test robots: no distance or heading error above
-0.5% from it). ``fdir1`` is Gazebo's: a direction in the link's frame, projected on the
-contact plane; without it mu1 acts along the tyre's rolling direction and mu2 along its
-axle, which is the only frame a spinning wheel keeps.
+robot behaves the same at every heading (tested at 0, 30, 45 and 90 degrees). Below the
+slip at which ``k * s`` reaches Coulomb's force, the force grows linearly with the slip:
+an explicit force stiffer than that would overshoot. ``k`` is half of what would stop the
+robot's share of mass (its mass over its tyres) sliding within one step: all its tyres
+together take at most half a step's slip away. A tyre under steady load therefore creeps,
+at (force needed) / k: 0.16 mm/s per newton for a 25 kg robot on two tyres at a 1 ms step.
+(A first version set the linear zone at 2 mu g dt instead: with a student's mu of 25 that
+was 0.49 m/s, and the robot drove 0.53 m of a commanded 1 m.) ``fdir1`` is Gazebo's: a
+direction in the link's frame, projected on the contact plane; without it mu1 acts along
+the tyre's rolling direction and mu2 along its axle, which is the only frame a spinning
+wheel keeps.
 
 A tyre is what :mod:`sim_bridge.robot_body` crowns: a collision cylinder turning about its
 own axis on a continuous or revolute joint; a link whose ``<gazebo>`` block gives
@@ -40,12 +44,8 @@ from typing import Dict, Optional, Sequence, Set, Tuple
 
 import pybullet as pb
 
-# Below this sliding speed (m/s) the friction force grows linearly instead of jumping to
-# mu N; at least SLIP_STEPS steps' worth of what gravity would do to the slip, which keeps
-# the explicit force stable (1 ms step, mu 1.5: 0.03 m/s).
-MIN_SLIP_SCALE = 0.01
-SLIP_STEPS = 2.0
-GRAVITY = 9.81
+# the share of one step's slip all of a robot's tyres together may take away (see above)
+STIFFNESS_SHARE = 0.5
 # below this length a projected direction has vanished (fdir1 along the contact normal)
 DEGENERATE = 1e-6
 
@@ -90,9 +90,9 @@ def _rotate(matrix: Sequence[float], vector: Sequence[float]) -> Vector:
             matrix[6] * vector[0] + matrix[7] * vector[1] + matrix[8] * vector[2])
 
 
-def slip_scale(mu: float, step_size: float) -> float:
-    """The sliding speed (m/s) below which the friction force is linear in the slip."""
-    return max(MIN_SLIP_SCALE, SLIP_STEPS * mu * GRAVITY * step_size)
+def stiffness(robot_mass: float, tyres: int, step_size: float) -> float:
+    """k (N per m/s of slip) of each of a robot's tyres (see the module's notes)."""
+    return STIFFNESS_SHARE * robot_mass / (max(tyres, 1) * step_size)
 
 
 def point_velocity(client: int, body: int, link: int, point: Sequence[float]) -> Vector:
@@ -116,6 +116,8 @@ class TyreFriction:
 
     def __init__(self, client: int, body: int, tyres: Sequence[Tyre], step_size: float,
                  all_tyres: Set[Tuple[int, int]]):
+        self.mass = sum(pb.getDynamicsInfo(body, link, physicsClientId=client)[0]
+                        for link in range(-1, pb.getNumJoints(body, physicsClientId=client)))
         self.client, self.body = client, body
         self.tyres: Dict[int, Tyre] = {tyre.link: tyre for tyre in tyres}
         self.links = sorted(self.tyres)
@@ -128,8 +130,7 @@ class TyreFriction:
             pb.changeDynamics(body, link, lateralFriction=0.0, physicsClientId=client)
 
     def set_step_size(self, step_size: float) -> None:
-        self.scales = {link: slip_scale(max(t.mu1, t.mu2), step_size)
-                       for link, t in self.tyres.items()}
+        self.stiffness = stiffness(self.mass, len(self.tyres), step_size)
 
     def forget(self) -> None:
         """The world's bodies changed: what was cached about other bodies may be stale."""
@@ -180,7 +181,8 @@ class TyreFriction:
         speed = math.sqrt(sx * sx + sy * sy + sz * sz)
         if speed == 0.0:
             return
-        scale = load / max(speed, self.scales[link])
+        # Coulomb's mu N, or less while k * slip is less
+        scale = min(load / speed, self.stiffness / max(mu1, mu2, 1e-12))
         if mu1 == mu2:
             factor = -mu1 * scale
             force = (factor * sx, factor * sy, factor * sz)
