@@ -16,6 +16,10 @@ class Check:
     passed: bool
     evidence: str
 
+    def __post_init__(self):
+        self.passed = bool(self.passed)   # numpy's bool_ is not JSON
+        self.evidence = str(self.evidence)
+
     @staticmethod
     def from_dict(data: Dict) -> "Check":
         return Check(str(data["name"]), bool(data["passed"]), str(data["evidence"]))
