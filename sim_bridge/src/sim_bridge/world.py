@@ -358,7 +358,10 @@ class World:
         self._has_meshes = None
         self._ray_scene = None
 
-    def _shape_arguments(self, shape: ShapeSpec, collision: bool) -> dict:
+    def _shape_arguments(self, shape: ShapeSpec, collision: bool, concave: bool = False) -> dict:
+        """pybullet's createCollisionShape/createVisualShape arguments. ``concave``: a mesh
+        collides as its triangles (static scenery only: pybullet moves no concave shape),
+        not as its convex hull, which fills a ring wall or a room in."""
         arguments: dict = {}
         if shape.kind == "box":
             arguments = dict(shapeType=pb.GEOM_BOX, halfExtents=[s / 2 for s in shape.size])
@@ -371,6 +374,8 @@ class World:
         elif shape.kind == "mesh":
             arguments = dict(shapeType=pb.GEOM_MESH, fileName=shape.filename,
                              meshScale=list(shape.scale))
+            if collision and concave:
+                arguments["flags"] = pb.GEOM_FORCE_CONCAVE_TRIMESH
         elif shape.kind == "plane":
             if collision:
                 arguments = dict(shapeType=pb.GEOM_PLANE, planeNormal=list(shape.normal))
@@ -381,10 +386,11 @@ class World:
             arguments["rgbaColor"] = list(shape.rgba or (0.7, 0.7, 0.7, 1.0))
         return arguments
 
-    def _make_shape(self, shape: ShapeSpec, collision: bool, relative_to=None) -> int:
+    def _make_shape(self, shape: ShapeSpec, collision: bool, relative_to=None,
+                    concave: bool = False) -> int:
         """A pybullet shape; ``relative_to`` = (link pose, body pose) places a visual on a
-        body that is not at the visual's own pose."""
-        arguments = self._shape_arguments(shape, collision)
+        body that is not at the visual's own pose; ``concave``: see _shape_arguments."""
+        arguments = self._shape_arguments(shape, collision, concave)
         if relative_to is not None:
             link_pose, body_pose = relative_to
             offset = np.linalg.inv(pose6_matrix(body_pose)) @ pose6_matrix(
@@ -410,7 +416,8 @@ class World:
                 if len(link.visuals) == 1 and visuals:
                     visual = self._make_shape(visuals.pop(), False,
                                               relative_to=(link_pose, pose))
-                body = self._fixed_body(self._make_shape(shape, True), visual, pose)
+                body = self._fixed_body(self._make_shape(shape, True, concave=True), visual,
+                                        pose)
                 # min(mu, 1): see WORLD_FRICTION
                 friction = WORLD_FRICTION if shape.friction is None \
                     else min(shape.friction, WORLD_FRICTION)
