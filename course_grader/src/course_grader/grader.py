@@ -4,6 +4,7 @@ probe's ground-truth measurements, and add task 1's URDF checks as evidence."""
 from __future__ import annotations
 
 import os
+import tempfile
 import time
 from typing import Callable, Dict, List, Optional
 
@@ -107,7 +108,15 @@ def grade(course: Course, path: str, out: str, platform_setup: str = PLATFORM_SE
           progress: Callable[[str], None] = lambda line: None,
           scenarios: Optional[List[str]] = None) -> Report:
     started = time.monotonic()
-    workspace = os.path.join(out, "workspace")
+    with tempfile.TemporaryDirectory(prefix=f"grade_{course.name}_ws_") as workspace:
+        return _grade_in(course, path, out, platform_setup, progress, scenarios, workspace,
+                         started)
+
+
+def _grade_in(course, path, out, platform_setup, progress, scenarios, workspace, started):
+    """``grade`` with the submission's catkin workspace in ``workspace``: a temporary folder
+    outside any source space (inside the repository, say under test_results/, the workspace's
+    own build would find the copied my_rb1_* packages twice)."""
     staged = submission.stage(path, course.packages, workspace)
     report = Report(course, os.path.abspath(path), [])
     if staged.revision:
@@ -116,7 +125,9 @@ def grade(course: Course, path: str, out: str, platform_setup: str = PLATFORM_SE
         report.notes.append(f"packages not found in the submission: {', '.join(staged.missing)}")
     progress(f"staged {', '.join(staged.found) or 'nothing'} in {workspace}")
     platform_env = submission.sourced(platform_setup, submission.clean_environment(dict(os.environ)))
-    built = submission.build(workspace, platform_env, course.limits["build"])
+    os.makedirs(out, exist_ok=True)
+    built = submission.build(workspace, platform_env, course.limits["build"],
+                             os.path.join(out, "catkin_make.log"))
     report.build = built.summary
     progress(built.summary)
     wanted = scenarios or course.scenarios()

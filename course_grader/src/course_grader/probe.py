@@ -219,7 +219,7 @@ def rotate(course) -> Dict:
                 f"'{r.answer[:60]}' {r.answered_at - r.stopped_at:+.2f} s after it stopped")
     degrees_ok = [check(f"rotate {r.requested:+.0f}", r.turned_ok(spec["tolerance"]),
                         f"asked {r.requested:+.0f} deg, turned {r.turned:+.1f} in truth "
-                        f"(within {spec['tolerance']:g})") for r in rotations]
+                        f"(tolerance {spec['tolerance']:g})") for r in rotations]
     success_ok = [check(f"answer to {r.requested:+.0f}",
                         r.answered_when_done(spec["tolerance"], spec["answer_lag"]), describe(r))
                   for r in rotations]

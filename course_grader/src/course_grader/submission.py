@@ -115,9 +115,8 @@ def sourced(setup_bash: str, base: Dict[str, str]) -> Dict[str, str]:
     return {key: value for key, value in pairs}
 
 
-def build(workspace: str, platform_env: Dict[str, str], limit: float) -> Build:
+def build(workspace: str, platform_env: Dict[str, str], limit: float, log_path: str) -> Build:
     """``catkin_make`` in ``workspace`` with the platform sourced; the log's last lines."""
-    log_path = os.path.join(workspace, "catkin_make.log")
     command = ["catkin_make", "-C", workspace, "-DPYTHON_EXECUTABLE=/usr/bin/python3"]
     with open(log_path, "w", encoding="utf-8") as log:
         try:
