@@ -28,6 +28,7 @@ import math
 import os
 import queue
 import subprocess
+import sys
 import threading
 import time
 from dataclasses import dataclass
@@ -42,6 +43,7 @@ from std_srvs.srv import Empty, EmptyResponse
 from tf2_msgs.msg import TFMessage
 
 from gazebo_msgs.msg import LinkStates, ModelStates
+from sim_bridge import one_simulator
 from sim_bridge.plugins.base import Bus, PluginError
 from sim_bridge.poses import quaternion_matrix
 from sim_bridge.ros_publishing import OwnClock, batch_queued_writes
@@ -64,6 +66,8 @@ from node_params import non_negative, parameter, positive, read, zero_or_at_leas
 
 # How long a service waits for the physics thread to take its request (wall seconds).
 REQUEST_TIMEOUT = 30.0
+# gzserver's exit status when its port is taken by another Gazebo
+ALREADY_RUNNING_STATUS = 255
 # What a request gets once the simulator has been told to stop.
 STOPPING = "the simulator is shutting down"
 # While paused, /clock is repeated this often (wall seconds) for late subscribers.
@@ -617,6 +621,10 @@ def build_world(config: Config, bus: Bus) -> World:
 def main(overrides: Optional[Dict[str, Any]] = None, log_level: int = rospy.INFO) -> None:
     """The simulator node; ``overrides`` take precedence over its parameters (gazebo_ros's
     gzserver passes what its command line says)."""
+    refused = one_simulator.refusal(one_simulator.resolved_node_name("gazebo"))
+    if refused:
+        print(f"sim_bridge cannot start: {refused}", file=sys.stderr)
+        raise SystemExit(ALREADY_RUNNING_STATUS)
     # rospy's signal handling off: see sim_bridge.stop_signals
     rospy.init_node("gazebo", log_level=log_level, disable_signals=True)
     batch_queued_writes()  # see sim_bridge.ros_publishing
