@@ -38,6 +38,7 @@ import math
 import os
 import sys
 import threading
+import time
 from dataclasses import dataclass
 from typing import List, Optional
 
@@ -63,6 +64,22 @@ from arm_move.scene_config import (PICK_OBJECT, REALSENSE_BOX, TABLE, empty_scen
                                    table_box, unit_quaternion)
 from arm_move.srv import (Follow, FollowResponse, Reset, ResetResponse, Step, StepResponse)
 
+# how often (wall s) start-up checks whether the joint states have come
+POLL_PERIOD = 0.05
+
+
+def _server_within(client: actionlib.SimpleActionClient, timeout: float) -> bool:
+    """Whether ``client``'s action server answers within ``timeout`` wall seconds. Start-up
+    is bounded in wall time: a simulator running many times faster than real time used up a
+    simulated 10 s before the controller spawner (a process starting in wall time) had
+    loaded the controllers, and with physics paused simulated time would never run out."""
+    answered: List[bool] = []
+    waiting = threading.Thread(target=lambda: answered.append(client.wait_for_server()),
+                               daemon=True)
+    waiting.start()
+    waiting.join(timeout)
+    return bool(answered and answered[0])
+
 
 @dataclass(frozen=True)
 class MoverSettings:
@@ -74,7 +91,7 @@ class MoverSettings:
     collision_padding: float = parameter(
         0.005, non_negative, expected="metres >= 0 the arm keeps from everything")
     action_timeout: float = parameter(
-        10.0, positive, expected="seconds > 0 to wait for the controllers' action servers "
+        10.0, positive, expected="wall seconds > 0 to wait for the controllers' action servers "
                                  "at start-up (arm.launch's driver_timeout)")
     execution_margin: float = parameter(
         5.0, non_negative, expected="seconds >= 0 a motion may run past its planned time")
@@ -151,7 +168,7 @@ class Mover:
         self.gripper = actionlib.SimpleActionClient("gripper_controller/follow_joint_trajectory",
                                                     FollowJointTrajectoryAction)
         for name, client in (("arm_controller", self.arm), ("gripper_controller", self.gripper)):
-            if not client.wait_for_server(rospy.Duration(timeout)):
+            if not _server_within(client, timeout):
                 raise RuntimeError(
                     f"no driver answers on {rospy.resolve_name(name)}/follow_joint_trajectory "
                     f"after {timeout:.0f} s. A driver must provide "
@@ -184,14 +201,11 @@ class Mover:
         rospy.logwarn("mover: no joint states newer than the end of the last motion")
 
     def _wait_for_joint_states(self, timeout: float) -> None:
-        deadline = rospy.get_time() + timeout
-        rate = rospy.Rate(20)
-        while not rospy.is_shutdown():
+        deadline = time.monotonic() + timeout  # wall time: see _server_within
+        while not rospy.is_shutdown() and time.monotonic() < deadline:
             if all(name in self._positions for name in ARM_JOINTS + FINGER_JOINTS):
                 return
-            if rospy.get_time() > deadline:
-                break
-            rate.sleep()
+            time.sleep(POLL_PERIOD)
         raise RuntimeError(f"no joint states for {', '.join(ARM_JOINTS + FINGER_JOINTS)} on "
                            f"{rospy.resolve_name('joint_states')} after {timeout:.0f} s")
 

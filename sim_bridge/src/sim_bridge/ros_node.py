@@ -361,10 +361,13 @@ class SimBridgeNode:
 
     @staticmethod
     def _tf_prefix(namespace: str) -> str:
-        """The ``tf_prefix`` parameter of the model's namespace (gazebo_ros's plugins prefix
-        their frames with it); "" when there is none."""
+        """What gazebo_ros's plugins prefix their frames with: the ``tf_prefix`` parameter
+        of the model's namespace, else the namespace itself, as GazeboRos (gazebo_plugins'
+        common parameter reader) falls back to it: three robots spawned in tb3_0..tb3_2
+        publish tb3_0/odom and so on, not three odom frames."""
         namespace = namespace.strip("/")
-        return str(rospy.get_param(f"/{namespace}/tf_prefix" if namespace else "/tf_prefix", ""))
+        prefix = rospy.get_param(f"/{namespace}/tf_prefix" if namespace else "/tf_prefix", "")
+        return str(prefix) or namespace
 
     def _spawn_urdf(self, request):
         return self._spawn(request, "urdf")
