@@ -89,7 +89,7 @@ def test_simulator_takes_a_huge_real_time_factor_as_fast_as_it_can(ros_env, resu
 
 
 @pytest.mark.parametrize("value, says", [
-    ("abc", "~action_timeout: 'abc' is not a number; expected seconds > 0 to wait for the "
+    ("abc", "~action_timeout: 'abc' is not a number; expected wall seconds > 0 to wait for the "
             "controllers' action servers at start-up (arm.launch's driver_timeout)"),
     ("0", "~action_timeout: 0 is not positive"),
 ])

@@ -35,7 +35,7 @@ def test_driver_timeout_as_roslaunch_hands_it_over():
 
 @pytest.mark.parametrize("cls, name, value, says", [
     (MoverSettings, "action_timeout", "abc",
-     "~action_timeout: 'abc' is not a number; expected seconds > 0 to wait for the "
+     "~action_timeout: 'abc' is not a number; expected wall seconds > 0 to wait for the "
      "controllers' action servers at start-up (arm.launch's driver_timeout)"),
     (MoverSettings, "action_timeout", 0, "~action_timeout: 0 is not positive"),
     (PlannerSettings, "seed", 0, "~seed: 0 is not between 1 and 4294967295"),
