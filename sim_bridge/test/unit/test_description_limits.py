@@ -292,3 +292,19 @@ def test_a_state_in_a_frame_is_turned_into_the_world(world):
     np.testing.assert_allclose(linear, (0.0, 0.5, 0.0), atol=1e-6)
     world.set_state("other", position, orientation, linear)
     np.testing.assert_allclose(world.pose("other")[0], expected, atol=1e-6)
+
+
+def test_a_urdf_written_on_one_line_longer_than_8_kb_spawns(world, diff_bot_xml):
+    """pybullet's importer refused a valid URDF written on one line of more than ~8 KB
+    ('Cannot load URDF file'); what sim_bridge hands it is written one element a line."""
+    tags = "".join(  # 60 small fixed parts make it long enough
+        f'<link name="tag_{i}"><inertial><mass value="0.001"/><inertia ixx="1e-7" ixy="0" '
+        f'ixz="0" iyy="1e-7" iyz="0" izz="1e-7"/></inertial><visual><geometry><box '
+        f'size="0.01 0.01 0.01"/></geometry></visual></link><joint name="tag_{i}_joint" '
+        f'type="fixed"><parent link="base_link"/><child link="tag_{i}"/><origin '
+        f'xyz="0 0 {0.06 + 0.001 * i}"/></joint>' for i in range(60))
+    xml = diff_bot_xml().replace("</robot>", tags + "</robot>")
+    one_line = " ".join(line.strip() for line in xml.splitlines() if line.strip())
+    assert "\n" not in one_line and len(one_line) > 8192
+    world.spawn_urdf("one_line", one_line, (0.0, 0.0, 0.1))
+    assert "one_line" in world.models

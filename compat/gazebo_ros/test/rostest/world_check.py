@@ -100,6 +100,17 @@ class World(unittest.TestCase):
         self.assertLess(math.hypot(after[0], after[1]), 0.01)
         self.assertGreaterEqual(self.sim.sim_time(), before_reset)  # time never goes back
 
+    def test_a_position_beyond_floats_is_refused_naming_the_value_sent(self):
+        """pybullet turns 1e300 into (inf, nan, nan): the answer names what was sent, the
+        model stays where it was, and the next request is served."""
+        before = self.sim.truth("diff_bot")
+        answer = self.set_state(ModelState(model_name="diff_bot", pose=pose(1e300, 0.0, 0.0)))
+        self.assertFalse(answer.success)
+        self.assertIn("1e+300", answer.status_message)
+        self.assertNotIn("nan", answer.status_message)
+        after = self.sim.truth("diff_bot")
+        self.assertLess(math.hypot(after[0] - before[0], after[1] - before[1]), 0.05)
+
     def test_nan_command_is_ignored_with_a_warning(self):
         self.sim.wait_sim_time(self.sim.sim_time() + 0.5)
         before = self.sim.truth("diff_bot")
