@@ -66,6 +66,8 @@ from node_params import non_negative, parameter, positive, read, zero_or_at_leas
 
 # How long a service waits for the physics thread to take its request (wall seconds).
 REQUEST_TIMEOUT = 30.0
+# s: how often the physics loop lets rospy's threads run (see main)
+THREAD_SWITCH_INTERVAL = 0.0005
 # gzserver's exit status when its port is taken by another Gazebo
 ALREADY_RUNNING_STATUS = 255
 # What a request gets once the simulator has been told to stop.
@@ -631,6 +633,10 @@ def main(overrides: Optional[Dict[str, Any]] = None, log_level: int = rospy.INFO
     # rospy's signal handling off: see sim_bridge.stop_signals
     rospy.init_node("gazebo", log_level=log_level, disable_signals=True)
     batch_queued_writes()  # see sim_bridge.ros_publishing
+    # rospy's writer and reader threads get the interpreter at least this often while the
+    # loop steps (Python's default, 5 ms, is 100 ms of simulated time at 20x real time:
+    # /clock and incoming commands arrived that late, and a flip commanded that late failed)
+    sys.setswitchinterval(THREAD_SWITCH_INTERVAL)
     stop = StopSignals().install()
     physics = PhysicsThread()
     try:
