@@ -568,4 +568,18 @@ def _load_world(path: str, warnings: _Warnings) -> WorldSpec:
             raise SdfError(f"{path}: two models are named '{model.name}'")
         names.add(model.name)
         spec.models.append(model)
+    _apply_state(world, spec, path)
     return spec
+
+
+def _apply_state(world: ET.Element, spec: WorldSpec, source: str) -> None:
+    """A world saved from Gazebo keeps where its models are in ``<state>``, which Gazebo
+    applies when it loads the world (Husky's playpen turns a barrier there: without it
+    the robot spawned on top of it): each ``<state><model name><pose>`` places the model
+    of that name. Links' poses and velocities in the state are not applied."""
+    models = {model.name: model for model in spec.models}
+    for state in world.findall("state"):
+        for element in state.findall("model"):
+            model = models.get(element.get("name", ""))
+            if model is not None and element.find("pose") is not None:
+                model.pose = _pose(element, f"<state> model '{model.name}'", source)
