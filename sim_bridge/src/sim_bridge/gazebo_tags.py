@@ -28,11 +28,12 @@ DEFAULT_MU = 1.0
 # Plugin parameters every gazebo_ros plugin takes and that change nothing here: the plugin
 # always runs, logs at the node's level, and legacyMode's wheel swap is not needed.
 READ_BY_EVERY_PLUGIN = frozenset(("alwaysOn", "rosDebugLevel", "legacyMode", "robotNamespace"))
-# <gazebo reference="joint"> tags with no effect here (pybullet's joints are exact, and
-# fixed joints are kept); reported once each.
+# <gazebo reference="joint"> tags with no effect here (pybullet's joints are exact);
+# reported once each. preserveFixedJoint and disableFixedJointLumping are honoured by
+# sim_bridge.model_structure (the links Gazebo shows), so they are not in this list.
 JOINT_TAGS_NOT_EMULATED = ("stopCfm", "stopErp", "fudgeFactor", "provideFeedback",
                            "implicitSpringDamper", "cfmDamping", "springStiffness",
-                           "springReference", "preserveFixedJoint", "disableFixedJointLumping")
+                           "springReference")
 
 
 @dataclass

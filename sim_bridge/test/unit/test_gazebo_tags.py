@@ -55,3 +55,13 @@ def test_the_world_warns_once_per_tag(world, bus):
     assert len([w for w in warnings if "<maxVel>" in w]) == 1
     assert any("<maxContacts> in link 'wheel'" in w for w in warnings)
     assert not any("<fdir1>" in w for w in warnings)  # emulated: sim_bridge.tyre_friction
+
+
+def test_preserve_fixed_joint_is_not_reported_as_ignored(world, bus):
+    """sim_bridge honours it (model_structure keeps the joint's link): warning that it is
+    ignored contradicted the README (found trying a student's RB1)."""
+    robot = ROBOT.replace('<gazebo reference="axle"><provideFeedback>true</provideFeedback></gazebo>',
+                          '<gazebo reference="axle"><preserveFixedJoint>true</preserveFixedJoint>'
+                          '</gazebo>')
+    world.spawn_urdf("r", robot, (0, 0, 0.5))
+    assert not [w for w in bus.warnings if "preserveFixedJoint" in w]
