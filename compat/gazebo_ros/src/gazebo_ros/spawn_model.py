@@ -172,11 +172,11 @@ def spawn(args: argparse.Namespace) -> None:
         rospy.ServiceProxy(f"{namespace}/unpause_physics", Empty)()
 
 
-def stay_then_delete(args: argparse.Namespace) -> None:
+def stay_then_delete(args: argparse.Namespace, stop: StopSignals) -> None:
     """-b: stay until Ctrl-C (or SIGTERM, as roslaunch sends), then delete the model. rospy's
     own signal handling is off for -b (sim_bridge.stop_signals says why), so that the node
-    is still up to make that call."""
-    stop = StopSignals().install()
+    is still up to make that call; ``stop`` was installed before the spawn, so a Ctrl-C
+    during it (while its log line still goes out) is not lost."""
     while not rospy.is_shutdown() and not stop.requested:
         time.sleep(POLL_PERIOD)
     try:
@@ -191,11 +191,12 @@ def main(argv: Optional[List[str]] = None) -> int:
     arguments = rospy.myargv(argv if argv is not None else sys.argv)[1:]
     args = parse_arguments(arguments)
     rospy.init_node("spawn_model", anonymous=True, disable_signals=args.b)
+    stop = StopSignals().install() if args.b else None
     try:
         spawn(args)
     except (SpawnError, rospy.ServiceException) as error:
         print(f"spawn_model: {error}", file=sys.stderr)
         return 1
     if args.b:
-        stay_then_delete(args)
+        stay_then_delete(args, stop)
     return 0
