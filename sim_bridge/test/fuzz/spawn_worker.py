@@ -17,9 +17,7 @@ the client (spawn_client.py), which restarts the worker.
 import json
 import math
 import os
-import shutil
 import sys
-import tempfile
 import time
 import traceback
 
@@ -33,6 +31,7 @@ os.dup2(2, 1)
 import pybullet as pb  # noqa: E402
 
 from recording_bus import RecordingBus  # noqa: E402
+from world_folder import written_world  # noqa: E402
 from sim_bridge import sdf_world  # noqa: E402
 from sim_bridge.sdf_world import LinkSpec, ModelSpec, SdfError, ShapeSpec  # noqa: E402
 from sim_bridge.world import SimError, World  # noqa: E402
@@ -80,19 +79,8 @@ def _spawn(world, case):
 
 
 def _load_world(case):
-    folder = tempfile.mkdtemp(prefix="fuzz_world_")
-    saved = os.environ.get("GAZEBO_MODEL_PATH")
-    try:
-        for relative, text in case.get("files", {}).items():
-            path = os.path.join(folder, relative)
-            os.makedirs(os.path.dirname(path), exist_ok=True)
-            with open(path, "w", encoding="utf-8", errors="surrogatepass") as stream:
-                stream.write(text)
-        world_file = os.path.join(folder, "fuzz.world")
-        with open(world_file, "w", encoding="utf-8", errors="surrogatepass") as stream:
-            stream.write(case["text"])
-        os.environ["GAZEBO_MODEL_PATH"] = os.pathsep.join(
-            [os.path.join(folder, "models")] + ([saved] if saved else []))
+    with written_world(case["text"], case.get("files", {}), "fuzz_world_",
+                       keep_model_path=True) as (_, world_file):
         spec = sdf_world.load_world(world_file, warn=lambda text: None)
         world = World(RecordingBus(), step_size=spec.step_size, ray_threads=1)
         try:
@@ -103,12 +91,6 @@ def _load_world(case):
         finally:
             world.close()
         return {"outcome": "model", "finite": finite, "leaked": 0}
-    finally:
-        if saved is None:
-            os.environ.pop("GAZEBO_MODEL_PATH", None)
-        else:
-            os.environ["GAZEBO_MODEL_PATH"] = saved
-        shutil.rmtree(folder, ignore_errors=True)
 
 
 def main():
