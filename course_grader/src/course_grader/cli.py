@@ -20,6 +20,9 @@ def parse_args(argv):
                                       "(default: a new temporary folder)")
     parser.add_argument("--only", nargs="+", metavar="SCENARIO",
                         help="run only these scenarios (their items alone are graded)")
+    parser.add_argument("--scenario-limit", type=float, metavar="SECONDS",
+                        help="wall-clock limit of one scenario, after which its processes are "
+                             "killed and its items score 0 (default: the course's limits.scenario)")
     parser.add_argument("--platform", default=grader.PLATFORM_SETUP,
                         help="setup.bash of the platform built alone (default: %(default)s)")
     return parser.parse_args(argv)
@@ -29,6 +32,8 @@ def main(argv=None) -> int:
     args = parse_args(sys.argv[1:] if argv is None else argv)
     try:
         course = course_file.load(args.course)
+        if args.scenario_limit is not None:
+            course.limits["scenario"] = args.scenario_limit
         unknown = sorted(set(args.only or []) - set(course.scenarios()))
         if unknown:
             raise course_file.CourseError(f"unknown scenario(s) {unknown}; the course has "
