@@ -1,6 +1,9 @@
 """``rosrun course_grader grade COURSE PATH [--out DIR] [--only SCENARIO ...]``: grades a
 submission (a folder, or a local git repository as committed), prints the table and
-writes report.md and report.json into DIR (default: a new temporary folder)."""
+writes report.md and report.json into DIR (default: a new temporary folder).
+
+Several PATHs (or any of --jobs, --shard, --csv, --limit): grades them in parallel, one
+child process each, and writes one CSV of scores (course_grader.batch)."""
 from __future__ import annotations
 
 import argparse
@@ -8,15 +11,22 @@ import sys
 import tempfile
 
 from course_grader import course as course_file
-from course_grader import grader, report
+from course_grader import batch, grader, report
 from course_grader.submission import SubmissionError
 
 
 def parse_args(argv):
+    return build_parser().parse_args(argv)
+
+
+def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="grade", description=__doc__.split("\n\n")[0])
     parser.add_argument("course", help=f"the course ({', '.join(course_file.available())})")
-    parser.add_argument("path", help="the submission: a folder or a local git repository")
+    parser.add_argument("path", nargs="+",
+                        help="the submission: a folder or a local git repository; several: "
+                             "graded in parallel, one CSV of scores")
     parser.add_argument("--out", help="folder for report.md, report.json, the build and logs "
+                                      "(several submissions: one subfolder each) "
                                       "(default: a new temporary folder)")
     parser.add_argument("--only", nargs="+", metavar="SCENARIO",
                         help="run only these scenarios (their items alone are graded)")
@@ -25,11 +35,22 @@ def parse_args(argv):
                              "killed and its items score 0 (default: the course's limits.scenario)")
     parser.add_argument("--platform", default=grader.PLATFORM_SETUP,
                         help="setup.bash of the platform built alone (default: %(default)s)")
-    return parser.parse_args(argv)
+    parser.add_argument("--jobs", type=int,
+                        help="submissions graded at once (default: the number of cores)")
+    parser.add_argument("--shard", metavar="I/N",
+                        help="grade only shard I of N (1-based) of the sorted paths: "
+                             "every N-th from the I-th")
+    parser.add_argument("--csv", metavar="FILE",
+                        help="the scores, one row per submission (default: OUT/scores.csv)")
+    parser.add_argument("--limit", type=float, metavar="SECONDS",
+                        help="wall-clock limit per submission, after which it is killed "
+                             "(default: from the course's limits)")
+    return parser
 
 
 def main(argv=None) -> int:
-    args = parse_args(sys.argv[1:] if argv is None else argv)
+    parser = build_parser()
+    args = parser.parse_args(sys.argv[1:] if argv is None else argv)
     try:
         course = course_file.load(args.course)
         if args.scenario_limit is not None:
@@ -39,10 +60,12 @@ def main(argv=None) -> int:
             raise course_file.CourseError(f"unknown scenario(s) {unknown}; the course has "
                                           f"{course.scenarios()}")
         out = args.out or tempfile.mkdtemp(prefix=f"grade_{course.name}_")
-        result = grader.grade(course, args.path, out, args.platform,
+        if batch.wanted(args):
+            return batch.main(parser, args, course, out)
+        result = grader.grade(course, args.path[0], out, args.platform,
                               progress=lambda line: print(f"grade: {line}", flush=True),
                               scenarios=args.only)
-    except (course_file.CourseError, SubmissionError) as error:
+    except (course_file.CourseError, SubmissionError, batch.BatchError) as error:
         print(f"grade: {error}", file=sys.stderr)
         return 2
     print()
