@@ -15,7 +15,7 @@ shards together grade every path exactly once (a CI matrix or a cluster's job ar
 
 The CSV: one row per submission, columns ``path, name, <item id>... (the course file's
 order), total, possible, seconds, status, reason``; an item not graded (``--only``) is an
-empty cell; status is ``graded``, ``refused`` (the grader could not use it: exit status 2),
+empty cell, and a submission not graded has 0 on each item it was to be graded on; status is ``graded``, ``refused`` (the grader could not use it: exit status 2),
 ``crashed`` (another exit status, or no report) or ``killed`` (past the limit)."""
 from __future__ import annotations
 
@@ -171,6 +171,13 @@ class Outcome:
     possible: float = 0.0
     seconds: float = 0.0
     reason: str = ""
+    expected: Dict[str, float] = field(default_factory=dict)  # item id -> points, items to grade
+
+    def zero(self, status: str, reason: str) -> None:
+        """Not graded (refused, crashed, killed): 0 on every item it was to be graded on."""
+        self.status, self.reason = status, reason
+        self.awarded = {item_id: 0.0 for item_id in self.expected}
+        self.possible = sum(self.expected.values())
 
     @property
     def total(self) -> float:
@@ -211,10 +218,10 @@ def read_outcome(outcome: Outcome, out: str, exit_status: Optional[int], log_pat
         return
     tail = " | ".join(_log_tail(log_path, REASON_LINES))
     if exit_status == REFUSED_STATUS:
-        outcome.status, outcome.reason = "refused", tail
+        outcome.zero("refused", tail)
     else:
         what = "no report.json" if exit_status == 0 else f"exit status {exit_status}"
-        outcome.status, outcome.reason = "crashed", f"{what}: {tail} (log {log_path})"
+        outcome.zero("crashed", f"{what}: {tail} (log {log_path})")
 
 
 class Runner:
@@ -254,9 +261,9 @@ class Runner:
         if killed:
             count = kill_all(child.marker, child.process.pid, self.stop_timeout)
             child.process.wait()
-            outcome.status = "killed"
-            outcome.reason = (f"still running after its limit of {self.limit:.0f} s: killed "
-                              f"with {count} process(es) it started (log {child.log_path})")
+            outcome.zero("killed", f"still running after its limit of {self.limit:.0f} s: "
+                                   f"killed with {count} process(es) it started "
+                                   f"(log {child.log_path})")
         else:
             read_outcome(outcome, child.out, child.process.returncode, child.log_path)
             strays = kill_all(child.marker, None, self.stop_timeout)   # the child is reaped
@@ -388,10 +395,12 @@ def main(parser, args, course: Course, out: str) -> int:
                     course.limits["stop"],
                     progress=lambda line: print(f"grade: {line}", flush=True))
     options = forwarded_options(parser, args)
+    scenarios = args.only or course.scenarios()
+    expected = {item.id: item.points for item in course.items if item.scenario in scenarios}
     tasks = []
     for path in paths:
         sub_out = os.path.join(out, folder_names[path])
-        tasks.append((Outcome(path, folder_names[path]),
+        tasks.append((Outcome(path, folder_names[path], expected=dict(expected)),
                       child_command(course, path, sub_out, options), sub_out, dict(os.environ)))
     print(f"grade: {len(tasks)} submissions, {runner.jobs} at a time, each within "
           f"{limit:.0f} s; reports under {out}", flush=True)

@@ -94,7 +94,8 @@ def test_csv_columns_and_rows(rb1, tmp_path):
                                                    zip(ids, rb1.items)}, rb1.total_points, 41.26)
     only = batch.Outcome("subs/b", "b", "graded", {"rotate_degrees": 0.0, "rotate_uses_odom": 1.0,
                                                    "rotate_answers_success": 0.0}, 4.0, 15.0)
-    killed = batch.Outcome("subs/c", "c", "killed", {}, 0.0, 950.0, "still running after ...")
+    killed = batch.Outcome("subs/c", "c", expected={"scan_readable": 0.75}, seconds=950.0)
+    killed.zero("killed", "still running after ...")
     path = str(tmp_path / "out" / "scores.csv")
     batch.write_csv(path, rb1, [full, only, killed])
     header, *body = rows(path)
@@ -103,8 +104,8 @@ def test_csv_columns_and_rows(rb1, tmp_path):
                        "10", "10", "41.3", "graded", ""]
     assert body[1][2:7] == ["", "", "", "", ""]          # not graded (--only): empty, not 0
     assert body[1][7:12] == ["0", "1", "0", "1", "4"]
-    assert body[2][2:10] == [""] * len(ids)
-    assert body[2][10:] == ["0", "0", "950.0", "killed", "still running after ..."]
+    assert body[2][2:10] == ["", "", "", "", "0", "", "", ""]
+    assert body[2][10:] == ["0", "0.75", "950.0", "killed", "still running after ..."]
 
 
 def test_outcome_read_from_the_child(rb1, tmp_path):
@@ -118,9 +119,12 @@ def test_outcome_read_from_the_child(rb1, tmp_path):
     assert graded.status == "graded"
     assert graded.total == pytest.approx(rb1.total_points - rb1.items[0].points)
     assert graded.awarded[rb1.items[0].id] == 0.0
-    crashed = batch.Outcome("s/a", "a")
+    expected = {item.id: item.points for item in rb1.items}
+    crashed = batch.Outcome("s/a", "a", expected=expected)
     batch.read_outcome(crashed, str(out), 1, str(log))
     assert crashed.status == "crashed" and crashed.total == 0
+    assert crashed.awarded == {item.id: 0.0 for item in rb1.items}
+    assert crashed.possible == pytest.approx(rb1.total_points)
     assert "exit status 1" in crashed.reason and "KeyError: 'x'" in crashed.reason
     refused = batch.Outcome("s/a", "a")
     batch.read_outcome(refused, str(out), batch.REFUSED_STATUS, str(log))
@@ -162,7 +166,8 @@ def test_a_hung_child_is_killed_with_what_it_started_and_its_sibling_is_graded(t
     ready = str(tmp_path / "hung_ready")
     hung_out, sibling_out = str(tmp_path / "hung"), str(tmp_path / "sibling")
     env = dict(os.environ)
-    tasks = [(batch.Outcome("subs/hung", "hung"), [sys.executable, "-c", HUNG, ready],
+    tasks = [(batch.Outcome("subs/hung", "hung", expected={"scan_readable": 0.75}),
+              [sys.executable, "-c", HUNG, ready],
               hung_out, env),
              (batch.Outcome("subs/sibling", "sibling"),
               [sys.executable, "-c", SIBLING, ready, sibling_out, str(HUNG_LIMIT)],
@@ -170,7 +175,7 @@ def test_a_hung_child_is_killed_with_what_it_started_and_its_sibling_is_graded(t
     lines = []
     runner = batch.Runner(2, HUNG_LIMIT, STOP_TIMEOUT, lines.append)
     hung, sibling = runner.run(tasks)
-    assert hung.status == "killed" and hung.total == 0, hung
+    assert hung.status == "killed" and hung.awarded == {"scan_readable": 0.0}, hung
     assert f"limit of {HUNG_LIMIT:.0f} s" in hung.reason and "1 process(es)" in hung.reason
     assert hung.seconds >= HUNG_LIMIT
     with open(ready, encoding="utf-8") as stream:
@@ -181,7 +186,7 @@ def test_a_hung_child_is_killed_with_what_it_started_and_its_sibling_is_graded(t
     with open(os.path.join(sibling_out, "report.json"), encoding="utf-8") as stream:
         assert json.load(stream)["ran_beside_the_hung_one"]
     assert sibling.seconds < HUNG_LIMIT
-    assert any("hung: 0 of 0, killed" in line for line in lines), lines
+    assert any("hung: 0 of 0.75, killed" in line for line in lines), lines
 
 
 def test_the_example_workflow_shards_cover_one_to_n():
