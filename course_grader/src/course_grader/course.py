@@ -1,5 +1,8 @@
 """A course's grading guide read from ``config/<course>.yaml``: its packages, commands,
-items with their points, the checks' numbers and the time limits."""
+items with their points, the checks' numbers and the time limits. A course may also name
+its scenarios (``scenarios:``): which commands each runs, and the function that measures it
+(a probe in the simulation's process, or a runner in the grader's for checks that need no
+simulation); without that section the grader's built-in RB1 scenarios apply."""
 from __future__ import annotations
 
 import os
@@ -27,6 +30,25 @@ class Item:
     scenario: str
 
 
+@dataclass(frozen=True)
+class ScenarioSpec:
+    """How one scenario runs: its commands (keys of ``commands``) in order, a topic per
+    command that shows it is up before the next is typed, and ``module:function`` of the
+    probe (run against the scenario's master) or of the runner (no simulation: files,
+    builds). ``display``: a virtual screen is started first."""
+
+    commands: Tuple[str, ...] = ()
+    ready: Dict[str, str] = field(default_factory=dict)
+    probe: str = ""
+    runner: str = ""
+    display: bool = False
+
+
+# the launch arguments given when a launch file declares them: no windows (no DISPLAY is
+# given, so the simulator is headless either way)
+DEFAULT_HEADLESS_ARGS = {"gui": "false"}
+
+
 @dataclass
 class Course:
     name: str
@@ -38,6 +60,10 @@ class Course:
     checks: Dict[str, Dict[str, Any]]
     urdf: Dict[str, Any]
     source: str = ""
+    # arguments after the launch file in a command ("flip:=true"), by command
+    command_args: Dict[str, List[str]] = field(default_factory=dict)
+    scenario_specs: Dict[str, ScenarioSpec] = field(default_factory=dict)
+    headless_args: Dict[str, str] = field(default_factory=lambda: dict(DEFAULT_HEADLESS_ARGS))
 
     @property
     def total_points(self) -> float:
@@ -81,11 +107,52 @@ def parse(path: str) -> Course:
                         commands={k: (str(v[0]), str(v[1])) for k, v in data["commands"].items()},
                         items=items, limits={k: float(v) for k, v in data["limits"].items()},
                         checks=dict(data.get("checks", {})), urdf=dict(data.get("urdf", {})),
-                        source=path)
+                        source=path,
+                        command_args={k: [str(a) for a in v[2:]]
+                                      for k, v in data["commands"].items()},
+                        scenario_specs=_scenario_specs(data.get("scenarios", {})),
+                        headless_args={str(k): str(v).lower() if isinstance(v, bool) else str(v)
+                                       for k, v in data.get("headless_args",
+                                                            DEFAULT_HEADLESS_ARGS).items()})
     except (KeyError, TypeError, ValueError, IndexError) as error:
         raise CourseError(f"{path}: malformed course file ({type(error).__name__}: {error})") \
             from error
     ids = [item.id for item in items]
     if len(set(ids)) != len(ids):
         raise CourseError(f"{path}: item ids repeat: {ids}")
+    _check_scenarios(course, path)
     return course
+
+
+def _scenario_specs(data: Dict[str, Any]) -> Dict[str, ScenarioSpec]:
+    specs = {}
+    for name, spec in data.items():
+        unknown = set(spec) - {"commands", "ready", "probe", "runner", "display"}
+        if unknown:
+            raise ValueError(f"scenario '{name}' has unknown keys {sorted(unknown)}")
+        specs[str(name)] = ScenarioSpec(
+            commands=tuple(str(c) for c in spec.get("commands", [])),
+            ready={str(k): str(v) for k, v in spec.get("ready", {}).items()},
+            probe=str(spec.get("probe", "")), runner=str(spec.get("runner", "")),
+            display=bool(spec.get("display", False)))
+    return specs
+
+
+def _check_scenarios(course: Course, path: str) -> None:
+    """A course that names its scenarios names every item's, each with one way to measure
+    it, and only commands it defines."""
+    if not course.scenario_specs:
+        return
+    for scenario in course.scenarios():
+        spec = course.scenario_specs.get(scenario)
+        if spec is None:
+            raise CourseError(f"{path}: scenario '{scenario}' (of its items) is not under "
+                              "'scenarios'")
+        if bool(spec.probe) == bool(spec.runner):
+            raise CourseError(f"{path}: scenario '{scenario}' needs exactly one of 'probe' "
+                              "(in the simulation) and 'runner' (no simulation)")
+        if spec.probe and not spec.commands:
+            raise CourseError(f"{path}: scenario '{scenario}' has a probe but no commands")
+        unknown = [c for c in spec.commands if c not in course.commands]
+        if unknown:
+            raise CourseError(f"{path}: scenario '{scenario}' runs unknown commands {unknown}")

@@ -3,13 +3,15 @@ of the guide in a fresh simulation (own master, own time limit), judge its items
 probe's ground-truth measurements, and add task 1's URDF checks as evidence."""
 from __future__ import annotations
 
+import importlib
 import os
 import tempfile
 import time
+from dataclasses import dataclass
 from typing import Callable, Dict, List, Optional
 
 from course_grader import ros_run, submission, urdf_checks
-from course_grader.course import Course
+from course_grader.course import Course, CourseError, ScenarioSpec
 from course_grader.results import Check, ItemResult, Report, failed_item, judge
 from urdf_tools import UrdfError
 
@@ -24,31 +26,58 @@ SCENARIO_COMMANDS = {"display": ["display"], "spawn": ["warehouse"], "drive": ["
 READY_TOPIC = {"warehouse": "/odom"}
 
 
-def _launch_args(env: Dict[str, str], package: str, launch_file: str) -> List[str]:
-    """gui:=false when the launch file has a gui argument (headless either way: no DISPLAY)."""
+def _launch_args(env: Dict[str, str], package: str, launch_file: str,
+                 headless: Optional[Dict[str, str]] = None) -> List[str]:
+    """The course's headless arguments (gui:=false) that the launch file declares
+    (headless either way: no DISPLAY)."""
     found = submission.sourced_find(env, package)
     path = os.path.join(found, "launch", launch_file) if found else ""
-    return ["gui:=false"] if "gui" in ros_run.declared_args(path) else []
+    declared = ros_run.declared_args(path)
+    headless = {"gui": "false"} if headless is None else headless
+    return [f"{name}:={value}" for name, value in headless.items() if name in declared]
+
+
+def scenario_spec(course: Course, scenario: str) -> ScenarioSpec:
+    """How ``scenario`` runs: the course file's own, or the built-in RB1 scenarios."""
+    if course.scenario_specs:
+        return course.scenario_specs[scenario]
+    commands = SCENARIO_COMMANDS[scenario]
+    return ScenarioSpec(commands=tuple(commands),
+                        ready={k: t for k, t in READY_TOPIC.items() if k in commands},
+                        probe=scenario, display=scenario == "display")
+
+
+def call_named(target: str, *args):
+    """Calls ``module:function`` (a course file names its measuring functions so)."""
+    module_name, _, function = target.partition(":")
+    try:
+        return getattr(importlib.import_module(module_name), function)(*args)
+    except (ImportError, AttributeError) as error:
+        raise CourseError(f"the course names '{target}', which cannot be loaded: {error}") \
+            from error
 
 
 def scenario_results(course: Course, scenario: str, env: Dict[str, str],
                      log_dir: str) -> List[ItemResult]:
     """Runs ``scenario`` in a fresh simulation; one result per item it judges."""
     items = course.items_of(scenario)
+    spec = scenario_spec(course, scenario)
     started = time.monotonic()
     limit = course.limits["scenario"]
     names = []
     try:
         with ros_run.Session(env, log_dir, course.limits) as session:
             session.start_master()
-            if scenario == "display":
+            if spec.display:
                 session.start_display()
-            for key in SCENARIO_COMMANDS[scenario]:
+            for key in spec.commands:
                 package, launch_file = course.commands[key]
                 names.append(key)
-                session.launch(key, package, launch_file, _launch_args(env, package, launch_file))
-                if key in READY_TOPIC and key != SCENARIO_COMMANDS[scenario][-1]:
-                    session.wait_for_topic(READY_TOPIC[key], course.limits["startup"])
+                session.launch(key, package, launch_file,
+                               _launch_args(env, package, launch_file, course.headless_args)
+                               + course.command_args.get(key, []))
+                if key in spec.ready and key != spec.commands[-1]:
+                    session.wait_for_topic(spec.ready[key], course.limits["startup"])
             remaining = limit - (time.monotonic() - started)
             answer = session.probe(scenario, course.source, max(1.0, remaining))
             session.check_alive()
@@ -63,6 +92,37 @@ def scenario_results(course: Course, scenario: str, env: Dict[str, str],
     checks, notes = answer.get("checks", {}), answer.get("notes", {})
     return [judge(item, [Check.from_dict(c) for c in checks.get(item.id, [])],
                   notes.get(item.id, []), trouble, seconds) for item in items]
+
+
+@dataclass
+class RunnerContext:
+    """What a runner (a scenario without a simulation) may use: the submission's sourced
+    environment, its catkin workspace, what was staged, and a folder for its logs."""
+
+    env: Dict[str, str]
+    workspace: str
+    staged: submission.Staged
+    log_dir: str
+
+
+def runner_results(course: Course, scenario: str, context: RunnerContext) -> List[ItemResult]:
+    """Runs the course's runner for ``scenario`` in this process; one result per item."""
+    items = course.items_of(scenario)
+    started = time.monotonic()
+    os.makedirs(context.log_dir, exist_ok=True)
+    try:
+        answer = call_named(scenario_spec(course, scenario).runner, course, scenario, context)
+    except CourseError:
+        raise
+    except Exception as error:  # pylint: disable=broad-except
+        answer = {"error": f"{type(error).__name__}: {error}"}
+    seconds = time.monotonic() - started
+    if "error" in answer:
+        return [failed_item(item, answer["error"], answer.get("log", []), seconds)
+                for item in items]
+    checks, notes, logs = answer.get("checks", {}), answer.get("notes", {}), answer.get("log", {})
+    return [judge(item, [Check.from_dict(c) for c in checks.get(item.id, [])],
+                  notes.get(item.id, []), logs.get(item.id, []), seconds) for item in items]
 
 
 def _trouble_after(log_dir: str, names: List[str]) -> List[str]:
@@ -143,7 +203,16 @@ def _grade_in(course, path, out, platform_setup, progress, scenarios, workspace,
         report.notes += foreign
     for scenario in wanted:
         items = course.items_of(scenario)
-        needed = {course.commands[key][0] for key in SCENARIO_COMMANDS[scenario]}
+        spec = scenario_spec(course, scenario)
+        if spec.runner:
+            progress(f"scenario {scenario}: {', '.join(i.id for i in items)}")
+            results = runner_results(course, scenario, RunnerContext(
+                env, workspace, staged, os.path.join(out, "logs", scenario)))
+            progress(f"scenario {scenario}: {sum(r.awarded for r in results):g} of "
+                     f"{sum(r.item.points for r in results):g} in {results[0].seconds:.0f} s")
+            report.results += results
+            continue
+        needed = {course.commands[key][0] for key in spec.commands}
         absent = sorted(needed & set(staged.missing))
         if absent:
             report.results += [failed_item(item, f"the submission has no {', '.join(absent)}")
@@ -154,8 +223,9 @@ def _grade_in(course, path, out, platform_setup, progress, scenarios, workspace,
         progress(f"scenario {scenario}: {sum(r.awarded for r in results):g} of "
                  f"{sum(r.item.points for r in results):g} in {results[0].seconds:.0f} s")
         report.results += results
-    add_urdf_evidence(course, report.results, staged.found.get("my_rb1_description") and
-                      os.path.join(workspace, "src", "my_rb1_description"))
+    if course.urdf:
+        add_urdf_evidence(course, report.results, staged.found.get("my_rb1_description") and
+                          os.path.join(workspace, "src", "my_rb1_description"))
     order = {item.id: index for index, item in enumerate(course.items)}
     report.results.sort(key=lambda r: order[r.item.id])
     report.seconds = time.monotonic() - started

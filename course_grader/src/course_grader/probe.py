@@ -4,6 +4,7 @@ master per process). It prints one JSON line: ``{"checks": {item: [check...]},
 "notes": {item: [text...]}}`` or ``{"error": text}``. Every wait is bounded."""
 from __future__ import annotations
 
+import importlib
 import json
 import math
 import sys
@@ -245,12 +246,23 @@ SCENARIOS = {"display": display, "spawn": spawn, "drive": drive, "scan": scan,
              "rotate": rotate}
 
 
+def measure(scenario: str, course) -> Dict:
+    """The scenario's probe: the course file's ``module:function`` when it names one,
+    else the built-in RB1 probe of that name."""
+    spec = course.scenario_specs.get(scenario)
+    target = spec.probe if spec is not None else scenario
+    if ":" not in target:
+        return SCENARIOS[target](course)
+    module_name, _, function = target.partition(":")
+    return getattr(importlib.import_module(module_name), function)(course, scenario)
+
+
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     scenario, config_path = argv[0], argv[1]
     rospy.init_node("course_grader_probe", anonymous=True, disable_signals=True)
     try:
-        answer = SCENARIOS[scenario](course_file.parse(config_path))
+        answer = measure(scenario, course_file.parse(config_path))
     except Exception as error:  # pylint: disable=broad-except
         traceback.print_exc()
         answer = {"error": f"{type(error).__name__}: {error}"}
