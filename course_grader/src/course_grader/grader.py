@@ -137,8 +137,8 @@ def _trouble_after(log_dir: str, names: List[str]) -> List[str]:
 
 
 def add_urdf_evidence(course: Course, results: List[ItemResult], description_dir: Optional[str]):
-    """Task 1's URDF checks: names and placements scored under the display item, the wheel
-    joints' type under the wheel item, sizes, mass, inertia and friction as notes."""
+    """Task 1's URDF checks: names, placements and the total mass scored under the display
+    item, the wheel joints' type under the wheel item, sizes, inertia and friction as notes."""
     by_id = {r.item.id: r for r in results}
     display, wheels = by_id.get("display_links_tf"), by_id.get("wheel_joints_move")
     path = urdf_checks.find_urdf(description_dir, course.urdf["file"]) if description_dir else None
@@ -154,7 +154,8 @@ def add_urdf_evidence(course: Course, results: List[ItemResult], description_dir
         return
     if display is not None:
         display.checks += [urdf_checks.names(model, course.urdf),
-                           *urdf_checks.placements(model, course.urdf)]
+                           *urdf_checks.placements(model, course.urdf),
+                           urdf_checks.total_mass(model, course.urdf)]
         display.notes += [f"{'pass' if c.passed else 'FAIL'}: {c.evidence}"
                           for c in urdf_checks.supporting(model, course.urdf)]
     if wheels is not None:

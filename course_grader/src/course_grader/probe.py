@@ -186,7 +186,7 @@ def rotate(course) -> Dict:
 
     rotations: List[Rotation] = []
     failures: List[str] = []
-    for degrees in spec["requests"]:
+    for index, degrees in enumerate(spec["requests"]):
         now = rospy.get_time()
         wait_until(lambda: still(now), limit, "the robot to be still before the request")
         began, yaw0 = recorder.latest()
@@ -214,6 +214,10 @@ def rotate(course) -> Dict:
             requested=float(degrees), turned=math.degrees(samples[-1][1] - yaw0),
             answer=text.strip(), answered_at=answer["at"],
             stopped_at=stop_time(samples, math.radians(spec["stopped_band"]))))
+        if not rotations[-1].turned_ok(spec["tolerance"]):
+            # both turn items are lost already; the rest would only take time
+            failures.append(f"not asked after the failed turn: {spec['requests'][index + 1:]}")
+            break
 
     def describe(r: Rotation) -> str:
         return (f"asked {r.requested:+.0f}: turned {r.turned:+.1f} deg in truth, answer "

@@ -100,3 +100,61 @@ def test_tyres_with_a_very_high_mu_still_grip_without_creeping():
             assert math.hypot(x1 - x0, y1 - y0) == pytest.approx(1.0, rel=0.03), label
         finally:
             world.close()
+
+
+def _fast_against_reference(world, bus, commands, seconds_each):
+    """Steps ``world`` through ``commands`` ((topic, linear, angular), each for
+    ``seconds_each``), checking before every step that every robot's fast tyre forces equal
+    the reference's to the last bit; returns which kinds of pair the contacts met."""
+    import pybullet as pb
+    met = set()
+    for topic, linear, angular in commands:
+        twist = Twist()
+        twist.linear.x, twist.angular.z = linear, angular
+        bus.subscriptions[topic](twist)
+        for _ in range(int(round(seconds_each / world.step_size))):
+            world._refresh_step_lists()
+            for friction in world._frictions:
+                contacts = pb.getContactPoints(bodyA=friction.body, physicsClientId=world.client)
+                fast = friction.forces(contacts)
+                assert fast == friction.reference_forces(contacts), \
+                    f"at {world.now:.3f} s the fast tyre forces differ from the reference's"
+                for pair in friction._pairs.values():
+                    met.update(name for name in ("moving", "react", "isotropic")
+                               if getattr(pair, name))
+                    met.update(["anisotropic"] if not pair.isotropic else [])
+                met.update(["forces"] if fast else [])
+            world.step()
+    return met
+
+
+def test_the_fast_tyre_forces_equal_the_reference_at_every_step():
+    """sim_bridge steps with TyreFriction.forces; reference_forces is the maths one contact
+    at a time. They must agree exactly, every step: two robots driving onto a free plank
+    (the other body moves and takes the opposite force) and into each other, and a robot
+    whose tyres grip differently along and across (mu1 != mu2 with fdir1)."""
+    bus = RecordingBus()
+    world = World(bus, ray_threads=1)
+    try:
+        world.add_sdf_model(ModelSpec("ground", True, links=[
+            LinkSpec("link", collisions=[ShapeSpec("plane")])]))
+        world.add_sdf_model(ModelSpec("plank", False, links=[LinkSpec(
+            "link", mass=3.0, inertia=(0.25, 0.25, 0.5),
+            collisions=[ShapeSpec("box", size=(1.0, 1.0, 0.01))])]), (0.9, 0.0, 0.005))
+        robot = expand(os.path.join(DATA, "diff_bot.urdf.xacro"), {})
+        world.spawn_urdf("one", robot, (0.0, 0.0, 0.1))
+        world.spawn_urdf("two", expand(os.path.join(DATA, "diff_bot.urdf.xacro"),
+                                       {"namespace": "two"}),
+                         (2.2, 0.05, 0.1), quaternion_from_euler(0.0, 0.0, 3.0), "two")
+        burger = expand(os.path.join(DATA, "burger_like.urdf.xacro"), {})
+        assert "<fdir1>" in burger and "<mu2>0.1</mu2>" in burger
+        world.spawn_urdf("burger", burger.replace("<mu2>0.1</mu2>", "<mu2>0.6</mu2>", 1),
+                         (0.0, 3.0, 0.05), quaternion_from_euler(0.0, 0.0, 0.3), "burger")
+        run(world, 0.3)
+        met = _fast_against_reference(world, bus, [
+            ("/cmd_vel", 0.5, 0.1), ("/two/cmd_vel", 0.6, 0.0), ("/burger/cmd_vel", 0.2, 0.8),
+            ("/burger/cmd_vel", -0.2, -1.5), ("/cmd_vel", -0.3, 0.0)], 1.0)
+    finally:
+        world.close()
+    assert met >= {"forces", "moving", "react", "isotropic", "anisotropic"}, \
+        f"the scene did not reach every kind of contact: {sorted(met)}"
