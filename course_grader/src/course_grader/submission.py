@@ -18,6 +18,10 @@ CATKIN_VARIABLES = ("ROS_PACKAGE_PATH", "CMAKE_PREFIX_PATH", "LD_LIBRARY_PATH",
                     "PKG_CONFIG_PATH", "ROSLISP_PACKAGE_DIRECTORIES", "ROS_ROOT", "ROS_ETC_DIR",
                     "ROS_MASTER_URI", "ROS_HOME", "ROS_NAMESPACE")
 BUILD_LOG_LINES = 15   # the compiler's last lines kept as evidence
+BUILD_ERROR_LINES = 8  # lines of the first error message (a compiler's, CMake's) in the evidence
+# a line that starts an error message: gcc/clang 'file:line:col: error:', 'CMake Error at',
+# 'Error:'
+ERROR_START = re.compile(r"(^|:\s*)(fatal )?error\b|^CMake Error\b|^Error\b", re.IGNORECASE)
 
 
 class SubmissionError(RuntimeError):
@@ -126,11 +130,30 @@ def build(workspace: str, platform_env: Dict[str, str], limit: float, log_path: 
         except subprocess.TimeoutExpired:
             code = None
     with open(log_path, encoding="utf-8", errors="replace") as log:
-        tail = [line.rstrip("\n") for line in log.readlines()[-BUILD_LOG_LINES:]]
+        lines = [line.rstrip("\n") for line in log]
+    tail = lines[-BUILD_LOG_LINES:]
     if code == 0:
         return Build(True, "catkin_make: ok", tail, log_path)
     reason = f"timed out after {limit:.0f} s" if code is None else f"exit status {code}"
-    return Build(False, f"catkin_make failed ({reason}); log {log_path}", tail, log_path)
+    error = first_error(lines)
+    return Build(False, f"catkin_make failed ({reason})" + (f": {error}" if error else "")
+                 + f"; log {log_path}", tail, log_path)
+
+
+def first_error(lines: List[str]) -> Optional[str]:
+    """The first error message in a build log with its continuation lines (indented; CMake
+    puts blank lines inside one), at most BUILD_ERROR_LINES, joined into one line; None when
+    no line starts an error."""
+    for index, line in enumerate(lines):
+        if ERROR_START.search(line.strip()):
+            message = [line.strip()]
+            for more in lines[index + 1:]:
+                if len(message) == BUILD_ERROR_LINES or (more.strip() and not more[:1].isspace()):
+                    break
+                if more.strip():
+                    message.append(more.strip())
+            return " ".join(message)
+    return None
 
 
 def resolves_inside(env: Dict[str, str], packages: List[str], workspace: str) -> List[str]:

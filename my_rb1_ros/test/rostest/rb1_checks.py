@@ -10,7 +10,11 @@ from gazebo_msgs.srv import GetModelState, GetWorldProperties
 from sim_bridge.testing import TIMEOUT, service_proxy, wait_until  # noqa: F401 (the tests import them from here)
 
 ROBOT = "my_rb1"
-START = (-5.0, 0.0)  # the start area's centre in the warehouse
+# my_rb1_robot_warehouse.launch's default spawn: the centre of the taped start square of the
+# course's warehouse (rb1_base_gazebo: inside x -0.896 to 0.028, y -1.712 to -0.933)
+START = (-0.434, -1.323)
+SQUARE_X = (-0.896, 0.028)
+SQUARE_Y = (-1.712, -0.933)
 
 
 class Truth:
