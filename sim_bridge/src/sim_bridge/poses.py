@@ -28,8 +28,25 @@ def rpy_from_quaternion(q: Sequence[float]) -> Vec3:
     return euler_from_quaternion(q)
 
 
+# tf.transformations' _EPS: below it a quaternion or a matrix column counts as zero
+TF_EPSILON = float(np.finfo(float).eps) * 4.0
+
+
 def yaw_from_quaternion(q: Sequence[float]) -> float:
-    return euler_from_quaternion(q)[2]
+    """``euler_from_quaternion(q)[2]`` (axes sxyz), tf.transformations' own steps written
+    out in floats: tf builds a 4x4 matrix with numpy for it (8 us; 1 us here), and every
+    odometry message needs a yaw. test_poses checks the two agree."""
+    x, y, z, w = (float(c) for c in q[:4])
+    norm = x * x + y * y + z * z + w * w
+    if norm < TF_EPSILON:  # tf: no rotation
+        return 0.0
+    scale = math.sqrt(2.0 / norm)
+    x, y, z, w = x * scale, y * scale, z * scale, w * scale
+    m00 = 1.0 - y * y - z * z  # the rotation matrix's first column
+    m10 = x * y + z * w
+    if math.sqrt(m00 * m00 + m10 * m10) > TF_EPSILON:
+        return math.atan2(m10, m00)
+    return 0.0  # looking straight up or down: tf puts the turn into roll
 
 
 def normalized(q: Sequence[float]) -> Quat:
