@@ -1,0 +1,83 @@
+"""course_grader's second course as a teaching assistant runs it: `rosrun course_grader grade
+me495_hw3 PATH` on a copy of the workspace's own diff_drive and arm_move (full marks), and,
+with `--only world`, on a copy whose ddrive.launch has no `paused` argument (one fault of the
+kinds students make): it loses exactly 'ddrive.launch paused:=true starts paused'."""
+import json
+import os
+import re
+import shutil
+import subprocess
+import time
+
+import pytest
+
+HW3_PACKAGES = ("diff_drive", "arm_move")
+GRADE_TIMEOUT = 600       # s: the whole grading of one submission, bounded
+PAUSED_ARG = re.compile(r'\s*<arg name="paused" default=[^>]*/>\n')
+PAUSED_VALUE = '<arg name="paused" value="$(arg paused)"/>'
+
+
+def copy_solution(repo, folder):
+    """Our packages as a student hands them in (arm.test included: the grader runs it)."""
+    os.makedirs(folder)
+    for package in HW3_PACKAGES:
+        shutil.copytree(os.path.join(repo, package), os.path.join(folder, package),
+                        ignore=shutil.ignore_patterns("__pycache__", "doc"))
+    return folder
+
+
+def grade(submission, out, *options):
+    started = time.monotonic()
+    done = subprocess.run(["rosrun", "course_grader", "grade", "me495_hw3", submission,
+                           "--out", out, *options], env=os.environ.copy(), capture_output=True,
+                          text=True, timeout=GRADE_TIMEOUT, check=False)
+    seconds = time.monotonic() - started
+    os.makedirs(out, exist_ok=True)
+    with open(os.path.join(out, "grade.log"), "w", encoding="utf-8") as log:
+        log.write(done.stdout + done.stderr)
+    assert done.returncode == 0, done.stdout + done.stderr
+    with open(os.path.join(out, "report.json"), encoding="utf-8") as stream:
+        report = json.load(stream)
+    return {item["id"]: item for item in report["items"]}, done.stdout, seconds
+
+
+@pytest.fixture(scope="module")
+def graded_solution(repo, tmp_path_factory):
+    submission = copy_solution(repo, str(tmp_path_factory.mktemp("hw3") / "submission"))
+    results = os.path.join(repo, "test_results", "e2e", "course_grader_hw3", "solution")
+    shutil.rmtree(results, ignore_errors=True)
+    return grade(submission, results)
+
+
+def test_our_solution_gets_full_marks(graded_solution):
+    items, stdout, seconds = graded_solution
+    print(f"grading our hw3 solution took {seconds:.0f} s")
+    assert set(items) == {"layout", "xacro_yaml_gazebo", "world_contents", "ddrive_paused",
+                          "flips", "arm_test", "step_floor_error", "step_reachable"}
+    for item in items.values():
+        assert item["awarded"] == item["points"], item
+    assert "catkin_make: ok" in stdout and "resolves to" not in stdout
+    assert "grade: 10 of 10 points" in stdout
+    # the figures come from the simulator's truth, not from the student's nodes
+    assert "from its true orientation" in items["flips"]["evidence"]
+    assert "true gripper point" in items["step_reachable"]["evidence"]
+
+
+def test_a_launch_file_without_paused_loses_exactly_that_item(repo, tmp_path, graded_solution):
+    submission = copy_solution(repo, str(tmp_path / "submission"))
+    launch = os.path.join(submission, "diff_drive", "launch", "ddrive.launch")
+    with open(launch, encoding="utf-8") as stream:
+        text = stream.read()
+    assert len(PAUSED_ARG.findall(text)) == 1 and PAUSED_VALUE in text, \
+        "the lines the fixture changes are no longer there"
+    text = PAUSED_ARG.sub("\n", text).replace(PAUSED_VALUE, '<arg name="paused" value="false"/>')
+    with open(launch, "w", encoding="utf-8") as stream:
+        stream.write(text)
+    results = os.path.join(repo, "test_results", "e2e", "course_grader_hw3", "no_paused")
+    shutil.rmtree(results, ignore_errors=True)
+    faulty, _, _ = grade(submission, results, "--only", "world")
+    ours = graded_solution[0]
+    assert set(faulty) == {"world_contents", "ddrive_paused"}
+    lost = {i for i, item in faulty.items() if item["awarded"] < ours[i]["awarded"]}
+    assert lost == {"ddrive_paused"}, {i: faulty[i]["evidence"] for i in faulty}
+    assert "does not declare an argument 'paused'" in faulty["ddrive_paused"]["evidence"]
