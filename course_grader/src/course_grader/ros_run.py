@@ -1,6 +1,9 @@
 """One scenario's processes: a fresh ``roscore`` on a free port, the guide's launch files,
 an optional virtual display, and the probe that measures; every wait bounded, every
-process stopped (its whole process group) at the end, logs kept per scenario."""
+process stopped at the end, logs kept per scenario. roslaunch starts each node in a session
+of its own (setsid), so a node that ignores SIGINT and SIGTERM outlives its launch's process
+group: every process the scenario starts carries the scenario's tag in its environment
+(SESSION_TAG), and whatever still carries it after the stop is killed."""
 from __future__ import annotations
 
 import json
@@ -18,6 +21,7 @@ import rosgraph
 PYTHON = "/usr/bin/python3"   # the system interpreter, where ROS lives
 POLL = 0.1                # s between looks at a condition
 LOG_LINES = 12            # lines of a launch's log kept to explain a failure
+SESSION_TAG = "COURSE_GRADER_SESSION"   # environment variable naming a scenario's processes
 # lines of a log that explain a failure
 TROUBLE = re.compile(r"\berror|fatal|traceback|exception|failed|not found|process has died|"
                      r"refus", re.IGNORECASE)
@@ -44,6 +48,43 @@ def wait_until(condition, timeout: float, what: str):
         time.sleep(POLL)
 
 
+def tagged(tag: str) -> List[int]:
+    """The processes whose environment holds ``SESSION_TAG=tag`` (inherited by every process
+    a scenario starts, whatever session or group it moves to)."""
+    wanted = f"{SESSION_TAG}={tag}".encode()
+    found = []
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit() or int(entry) == os.getpid():
+            continue
+        try:
+            with open(f"/proc/{entry}/environ", "rb") as stream:
+                if wanted in stream.read().split(b"\0"):
+                    found.append(int(entry))
+        except OSError:   # gone meanwhile, or not ours to read
+            continue
+    return found
+
+
+def kill_tagged(tag: str, timeout: float) -> List[int]:
+    """SIGKILL to every process tagged ``tag`` until none is left (``timeout`` s at most);
+    the ones killed."""
+    killed: List[int] = []
+
+    def none_left():
+        for pid in tagged(tag):
+            try:
+                os.kill(pid, signal.SIGKILL)
+                killed.append(pid)
+            except ProcessLookupError:
+                pass
+        return not tagged(tag)
+    try:
+        wait_until(none_left, timeout, f"the processes tagged {tag} to end")
+    except RunError:
+        pass   # a process stuck in the kernel (D state): nothing more a signal can do
+    return sorted(set(killed))
+
+
 def declared_args(launch_file: str) -> List[str]:
     """The arguments a launch file lets the command line set (top-level ``<arg>`` without
     ``value``)."""
@@ -63,8 +104,11 @@ class Session:
         os.makedirs(log_dir, exist_ok=True)
         self.port = free_port()
         self.master_uri = f"http://127.0.0.1:{self.port}"
+        self.tag = f"{os.getpid()}-{self.port}-{time.monotonic_ns()}"
         self.env = dict(env, ROS_MASTER_URI=self.master_uri, ROS_HOME=os.path.join(log_dir, "ros"),
-                        ROS_LOG_DIR=os.path.join(log_dir, "ros", "log"), PYTHONUNBUFFERED="1")
+                        ROS_LOG_DIR=os.path.join(log_dir, "ros", "log"), PYTHONUNBUFFERED="1",
+                        **{SESSION_TAG: self.tag})
+        self.strays: List[int] = []   # processes killed by their tag after the stop
         self.env.pop("DISPLAY", None)
         self.processes: List[tuple] = []   # (name, Popen, log path)
 
@@ -151,7 +195,9 @@ class Session:
         return json.loads(lines[-1])
 
     def stop(self) -> None:
-        """SIGINT to every process group (launches first, roscore last), then SIGKILL."""
+        """SIGINT to every process group (launches first, roscore last), then SIGKILL; then
+        SIGKILL to every process still tagged with this scenario (a node in a session of its
+        own that ignored the signals)."""
         for _, process, _ in reversed(self.processes):
             if process.poll() is None:
                 try:
@@ -169,6 +215,7 @@ class Session:
             except (ProcessLookupError, PermissionError):
                 pass
             process.wait()
+        self.strays = kill_tagged(self.tag, self.limits["stop"])
 
     def trouble(self, names: Optional[List[str]] = None) -> List[str]:
         """The lines of the launches' logs that explain a failure (errors, tracebacks)."""

@@ -3,8 +3,10 @@ without a master: the rotate requests reach past 180 degrees and a full turn (a 
 into (-180, 180] passed 90 and -90), a URDF that does not weigh the guide's 25 kg loses the
 description item (the simulator drives the mass the URDF gives), and a build that fails
 names its first error message (CMake's, the message generator's or the compiler's), not only
-the log's last lines."""
+the log's last lines; a node that roslaunch put in a session of its own and that ignores
+SIGINT and SIGTERM is killed when its scenario stops (it outlived the stop, orphaned)."""
 import math
+import os
 
 import pytest
 
@@ -116,3 +118,27 @@ def test_the_scenario_limit_is_a_command_line_option():
     from course_grader import cli
     assert cli.parse_args(["rb1", "PATH", "--scenario-limit", "20"]).scenario_limit == 20.0
     assert cli.parse_args(["rb1", "PATH"]).scenario_limit is None
+
+
+def test_a_node_in_its_own_session_ignoring_signals_is_killed_at_the_stop(tmp_path):
+    """As roslaunch starts a node (setsid) that ignores SIGINT and SIGTERM: the launch's
+    process group is gone after the stop, the node must be too."""
+    from course_grader import ros_run
+    pid_file, node = tmp_path / "node.pid", tmp_path / "node.sh"
+    node.write_text(f"trap '' INT TERM\necho $$ > {pid_file}\nexec sleep 600\n")
+    launch = f"setsid bash {node} & wait"
+    session = ros_run.Session(dict(os.environ), str(tmp_path / "logs"),
+                              {"stop": 2.0, "startup": 5.0, "scenario": 10.0})
+    with session:
+        session._start("launch", ["bash", "-c", launch])  # pylint: disable=protected-access
+        pid = ros_run.wait_until(lambda: pid_file.exists() and pid_file.read_text().strip(),
+                                 5.0, "the node's pid")
+        assert os.getpgid(int(pid)) != os.getpgid(session.processes[0][1].pid)  # own group
+    assert session.strays == [int(pid)]
+    ros_run.wait_until(lambda: not os.path.exists(f"/proc/{pid}") or
+                       _state(pid) == "Z", 5.0, "the node to end")
+
+
+def _state(pid):
+    with open(f"/proc/{pid}/stat", encoding="utf-8") as stream:
+        return stream.read().rsplit(")", 1)[1].split()[0]
