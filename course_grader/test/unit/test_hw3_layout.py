@@ -176,3 +176,24 @@ def test_the_error_code_is_read_from_the_response():
                                  message=("string", "below"))) == -16
     assert response_code(Message(message=("string", ""), code=("int32", 1))) == 1
     assert response_code(Message(message=("string", "ok"))) is None
+
+
+def test_the_layout_runner_through_the_graders_hook(tmp_path):
+    """grader.runner_results runs the course file's runner and judges its items: our
+    packages score both layout items; without arm_move, the layout item alone is lost."""
+    from course_grader import grader
+    from course_grader.submission import Staged
+    hw3 = course_file.load("me495_hw3")
+    src = tmp_path / "src"
+    for name in ("diff_drive", "arm_move"):
+        shutil.copytree(os.path.join(REPO, name), src / name,
+                        ignore=shutil.ignore_patterns("__pycache__", "doc"))
+    staged = Staged(str(tmp_path), {n: str(src / n) for n in ("diff_drive", "arm_move")})
+    context = grader.RunnerContext(dict(os.environ), str(tmp_path), staged, str(tmp_path / "log"))
+    awarded = {r.item.id: r.awarded for r in grader.runner_results(hw3, "layout", context)}
+    assert awarded == {"layout": 0.5, "xacro_yaml_gazebo": 1.0}
+    staged = Staged(str(tmp_path), {"diff_drive": str(src / "diff_drive")}, ["arm_move"])
+    context = grader.RunnerContext(dict(os.environ), str(tmp_path), staged, str(tmp_path / "log"))
+    results = {r.item.id: r for r in grader.runner_results(hw3, "layout", context)}
+    assert results["layout"].awarded == 0 and results["xacro_yaml_gazebo"].awarded == 1.0
+    assert "the submission has no arm_move" in results["layout"].evidence()
