@@ -4,8 +4,8 @@
 #   make demo     set up, then run the main demo (headless: prints a screenshot's path)
 #   make test     set up, then run every test tier; ends with "N passed, N failed"
 #   make fuzz-long set up, then the fuzz tier with many more random cases (FUZZ_LONG=1)
-#   make soak     set up, then what is too slow or too timing-bound for make test: the flip
-#                 routine through ROS at four headings (diff_drive/test/soak/flip_headings.test)
+#   make soak     set up, then the long and timing-bound runs beside make test: the flip
+#                 routine through ROS at four headings at real time (make test runs it at 2x)
 #   make bench    set up, then measure sim_bridge's speed and memory (prints a table)
 #   make lint     catkin_lint -W2 on every package
 .PHONY: all setup demo test fuzz-long soak bench lint clean
@@ -29,7 +29,7 @@ fuzz-long: setup
 	@$(RUN) FUZZ_LONG=1 flock /tmp/sim.lock python3 tools/run_tests.py --tier fuzz
 
 soak: setup
-	@$(RUN) flock /tmp/sim.lock rostest diff_drive flip_headings.test
+	@$(RUN) flock /tmp/sim.lock rostest diff_drive flip_headings.test real_time_factor:=1
 
 bench: setup
 	@$(RUN) python3 tools/bench.py

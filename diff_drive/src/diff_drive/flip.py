@@ -10,14 +10,22 @@ Settings are private parameters (``~speed``, ``~leg_time``, ``~rate``); what is 
 comes from the package's ``config/flip.yaml``, the one place the defaults live. The node
 starts once the robot's odometry (``diff/odom``) arrives, and counts the flips it sees
 there (the body's up axis changing sign) in its log.
+
+The routine is a schedule in simulated time (:func:`schedule`): a command every ``1/rate``
+s and one at each leg's exact start, each published when its time comes. A reversal is the
+flip's whole cause, so it must not wait for the next periodic sample: a loop that samples
+the clock at ``rate`` and asks which leg it is in reverses up to a whole period late (and
+at random, as its samples drift against the legs' boundaries), and a late reversal can
+fail to throw the robot over.
 """
 from __future__ import annotations
 
 import dataclasses
+import math
 import os
 import sys
 from dataclasses import dataclass, fields
-from typing import Mapping, Optional
+from typing import Iterator, Mapping, Optional, Tuple
 
 import rospkg
 import rospy
@@ -25,6 +33,8 @@ import yaml
 from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry
 from node_params import given_from, parameter, positive, read
+
+SAME_INSTANT = 1e-9  # s: a tick and a leg's start closer than this are one command
 
 
 @dataclass(frozen=True)
@@ -64,8 +74,31 @@ def packaged_settings_path() -> str:
 def commanded_speed(settings: FlipSettings, elapsed: float) -> float:
     """The wheels' ground speed ``elapsed`` seconds into the routine: +speed on even legs,
     -speed on odd ones."""
-    leg = int(max(elapsed, 0.0) // settings.leg_time)
+    return leg_speed(settings, int(max(elapsed, 0.0) // settings.leg_time))
+
+
+def leg_speed(settings: FlipSettings, leg: int) -> float:
+    """The wheels' ground speed on leg number ``leg`` (0 first): +speed on even legs."""
     return settings.speed if leg % 2 == 0 else -settings.speed
+
+
+def schedule(settings: FlipSettings) -> Iterator[Tuple[float, float]]:
+    """The routine's commands, endless and in order, as (seconds into the routine, speed):
+    one every ``1/rate`` s, and one at the exact start of every leg. Times are counted as
+    multiples (tick / rate, leg * leg_time), never summed, so they do not drift; a tick
+    that falls on a leg's start is that leg's command."""
+    tick, leg = 0, 0
+    while True:
+        tick_time, leg_start = tick / settings.rate, leg * settings.leg_time
+        if math.isclose(leg_start, tick_time, abs_tol=SAME_INSTANT):
+            yield leg_start, leg_speed(settings, leg)
+            tick, leg = tick + 1, leg + 1
+        elif leg_start < tick_time:
+            yield leg_start, leg_speed(settings, leg)
+            leg += 1
+        else:
+            yield tick_time, leg_speed(settings, leg - 1)
+            tick += 1
 
 
 def up_axis_z(x: float, y: float, z: float, w: float) -> float:
@@ -108,24 +141,34 @@ class FlipNode:
         rospy.on_shutdown(self._stop)
         rospy.loginfo("flip: %.2f m/s legs of %.2f s, reversing at once, never turning",
                       self.settings.speed, self.settings.leg_time)
-        rate = rospy.Rate(self.settings.rate)
         rospy.loginfo("flip: waiting for the robot's odometry on %s",
                       rospy.resolve_name("diff/odom"))
-        start = None  # the routine starts once the robot is there (its odometry arrives)
-        while not rospy.is_shutdown():
-            now = rospy.get_time()
-            if start is None and self._odometry_seen:
-                start = now
-            if start is not None:
-                twist = Twist()
-                twist.linear.x = commanded_speed(self.settings, now - start)
-                self._command.publish(twist)
-            try:
-                rate.sleep()
-            except rospy.exceptions.ROSTimeMovedBackwardsException:
-                start = None  # the world was reset: start the routine again
-            except rospy.exceptions.ROSInterruptException:
-                break
+        try:
+            while not rospy.is_shutdown():
+                self._wait_for_odometry()
+                try:
+                    self._drive()
+                except rospy.exceptions.ROSTimeMovedBackwardsException:
+                    rospy.loginfo("flip: the clock went back (world reset): starting again")
+        except rospy.exceptions.ROSInterruptException:
+            pass
+
+    def _wait_for_odometry(self) -> None:
+        """Returns once the robot's odometry has arrived (polled at the routine's rate)."""
+        while not self._odometry_seen:
+            rospy.sleep(1.0 / self.settings.rate)
+
+    def _drive(self) -> None:
+        """Publishes the schedule from now on, each command when its time comes (simulated
+        time); ends only by an exception (shutdown, the clock going back)."""
+        start = rospy.get_time()
+        for elapsed, speed in schedule(self.settings):
+            due = start + elapsed - rospy.get_time()
+            if due > 0.0:
+                rospy.sleep(due)
+            twist = Twist()
+            twist.linear.x = speed
+            self._command.publish(twist)
 
     def _on_odometry(self, message: Odometry) -> None:
         self._odometry_seen = True

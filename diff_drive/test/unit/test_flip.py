@@ -4,8 +4,10 @@ import os
 
 import pytest
 
+from itertools import islice
+
 from diff_drive.flip import (FlipCounter, FlipSettings, commanded_speed, load_defaults,
-                             up_axis_z)
+                             schedule, up_axis_z)
 
 PACKAGE = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DEFAULTS = os.path.join(PACKAGE, "config", "flip.yaml")
@@ -28,6 +30,28 @@ def test_legs_alternate_in_sign_at_full_speed():
     assert speeds == [2.0, -2.0, 2.0, -2.0, 2.0, -2.0]
     # the reversal is sudden: full speed one way just before, full speed the other after
     assert commanded_speed(flip, 1.499) == 2.0 and commanded_speed(flip, 1.501) == -2.0
+
+
+def test_the_schedule_reverses_exactly_at_each_legs_start():
+    flip = settings()  # legs of 1.5 s at 20 Hz: every leg's start is a tick
+    events = list(islice(schedule(flip), 200))
+    times = [t for t, _ in events]
+    assert times == pytest.approx([n / 20.0 for n in range(200)])
+    reversals = [t for (t, v), (_, before) in zip(events[1:], events) if v != before]
+    assert reversals == pytest.approx([1.5 * leg for leg in range(1, 7)])
+    assert all(v == commanded_speed(flip, t + 1e-6) for t, v in events)
+
+
+def test_a_leg_start_between_ticks_gets_its_own_command():
+    flip = settings(leg_time=1.33)
+    events = list(islice(schedule(flip), 120))
+    times = [t for t, _ in events]
+    assert times == sorted(times) and len(set(times)) == len(times)
+    reversals = [t for (t, v), (_, before) in zip(events[1:], events) if v != before]
+    assert reversals == pytest.approx([1.33 * leg for leg in range(1, len(reversals) + 1)])
+    assert len(reversals) == 4
+    ticks = [t for t in times if t not in reversals]
+    assert ticks == pytest.approx([n / 20.0 for n in range(len(ticks))])
 
 
 @pytest.mark.parametrize("name, value", [("speed", 0.0), ("speed", -1.0),
