@@ -1,7 +1,9 @@
 """course_grader's second course as a teaching assistant runs it: `rosrun course_grader grade
 me495_hw3 PATH` on a copy of the workspace's own diff_drive and arm_move (full marks), and,
-with `--only world`, on a copy whose ddrive.launch has no `paused` argument (one fault of the
-kinds students make): it loses exactly 'ddrive.launch paused:=true starts paused'."""
+with `--only`, on two copies with one fault each of the kinds students make: ddrive.launch
+without a `paused` argument loses exactly 'ddrive.launch paused:=true starts paused'; a step
+service that answers SUCCESS without planning or moving (so it accepts a target in the
+floor) loses exactly the two step items, judged on the simulator's gripper point."""
 import json
 import os
 import re
@@ -15,6 +17,9 @@ HW3_PACKAGES = ("diff_drive", "arm_move")
 GRADE_TIMEOUT = 600       # s: the whole grading of one submission, bounded
 PAUSED_ARG = re.compile(r'\s*<arg name="paused" default=[^>]*/>\n')
 PAUSED_VALUE = '<arg name="paused" value="$(arg paused)"/>'
+# the line of arm_move's mover the step fixture answers before: success, nothing planned
+STEP_LINE = "        target = (request.position.x, request.position.y, request.position.z)\n"
+STEP_LIE = "        return Codes.SUCCESS, \"step: done\"\n"
 
 
 def copy_solution(repo, folder):
@@ -81,3 +86,25 @@ def test_a_launch_file_without_paused_loses_exactly_that_item(repo, tmp_path, gr
     lost = {i for i, item in faulty.items() if item["awarded"] < ours[i]["awarded"]}
     assert lost == {"ddrive_paused"}, {i: faulty[i]["evidence"] for i in faulty}
     assert "does not declare an argument 'paused'" in faulty["ddrive_paused"]["evidence"]
+
+
+def test_a_step_service_that_always_succeeds_loses_exactly_the_step_items(repo, tmp_path,
+                                                                           graded_solution):
+    submission = copy_solution(repo, str(tmp_path / "submission"))
+    mover = os.path.join(submission, "arm_move", "src", "arm_move", "mover.py")
+    with open(mover, encoding="utf-8") as stream:
+        lines = stream.readlines()
+    assert lines.count(STEP_LINE) == 1, "the line the fixture changes is no longer there"
+    lines.insert(lines.index(STEP_LINE), STEP_LIE)
+    with open(mover, "w", encoding="utf-8") as stream:
+        stream.writelines(lines)
+    results = os.path.join(repo, "test_results", "e2e", "course_grader_hw3", "step_lies")
+    shutil.rmtree(results, ignore_errors=True)
+    faulty, _, _ = grade(submission, results, "--only", "step")
+    ours = graded_solution[0]
+    assert set(faulty) == {"step_floor_error", "step_reachable"}
+    lost = {i for i, item in faulty.items() if item["awarded"] < ours[i]["awarded"]}
+    assert lost == {"step_floor_error", "step_reachable"}, \
+        {i: faulty[i]["evidence"] for i in faulty}
+    assert "answered code 1" in faulty["step_floor_error"]["evidence"]
+    assert "mm from the target" in faulty["step_reachable"]["evidence"]
