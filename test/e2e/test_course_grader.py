@@ -1,31 +1,22 @@
 """course_grader as a teaching assistant runs it: `rosrun course_grader grade rb1 PATH` on
 a copy of the workspace's own RB1 solution (full marks, 10 of 10: it spawns on the taped
-square of the course's warehouse, rb1_base_gazebo), and on a copy whose rotate service
-answers success at once without turning (it loses exactly task 4's 'turns by the requested
-degrees' and 'answers success when done')."""
+square of the course's warehouse, rb1_base_gazebo). Copies with one fault each (a rotate
+service that answers without turning among them) are graded by
+test_course_grader_faults.py, from the table in rb1_fault_fixtures.py."""
 import json
 import os
 import shutil
 import subprocess
+import sys
 import time
 
 import pytest
 
-RB1_PACKAGES = ("my_rb1_description", "my_rb1_gazebo", "my_rb1_ros")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from rb1_fault_fixtures import copy_solution  # noqa: E402  (beside this file, not a package)
+
 GRADE_TIMEOUT = 600       # s: the whole grading of one submission, bounded
-# the one line changed in the faulty fixture: the service answers without turning
-TURN_LINE = "            return self._turn_by(degrees, start, watch)\n"
-LIE_LINE = "            return f\"success: rotated {degrees} degrees\"\n"
-ROTATE_FAULT_ITEMS = {"rotate_degrees", "rotate_answers_success"}
 FULL_MARKS = 10.0         # the RB1 guide's points in all (course_grader/config/rb1.yaml)
-
-
-def copy_solution(repo, folder):
-    os.makedirs(folder)
-    for package in RB1_PACKAGES:
-        shutil.copytree(os.path.join(repo, package), os.path.join(folder, package),
-                        ignore=shutil.ignore_patterns("__pycache__", "test"))
-    return folder
 
 
 def grade(ros_env, submission, out):
@@ -65,24 +56,3 @@ def test_build_is_overlaid_on_the_platform_only(graded_solution, repo):
     submission, items, stdout, _ = graded_solution
     assert "catkin_make: ok" in stdout
     assert "resolves to" not in stdout      # every my_rb1_* package is the submission's
-
-
-def test_a_service_that_does_not_turn_loses_exactly_its_two_items(repo, tmp_path,
-                                                                  graded_solution):
-    submission = copy_solution(repo, str(tmp_path / "submission"))
-    node = os.path.join(submission, "my_rb1_ros", "src", "my_rb1_ros", "rotate_service.py")
-    with open(node, encoding="utf-8") as stream:
-        lines = stream.readlines()
-    assert lines.count(TURN_LINE) == 1, "the line the fixture changes is no longer there"
-    lines[lines.index(TURN_LINE)] = LIE_LINE
-    with open(node, "w", encoding="utf-8") as stream:
-        stream.writelines(lines)
-    results = os.path.join(repo, "test_results", "e2e", "course_grader", "rotate_lies")
-    shutil.rmtree(results, ignore_errors=True)
-    faulty, _, _ = grade(os.environ.copy(), submission, results)
-    ours = graded_solution[1]
-    lost = {item_id for item_id, item in faulty.items()
-            if item["awarded"] < ours[item_id]["awarded"]}
-    assert lost == ROTATE_FAULT_ITEMS, {i: faulty[i]["evidence"] for i in faulty}
-    assert "turned +0.0" in faulty["rotate_degrees"]["evidence"] or \
-        "turned -0.0" in faulty["rotate_degrees"]["evidence"], faulty["rotate_degrees"]

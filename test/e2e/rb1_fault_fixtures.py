@@ -1,0 +1,218 @@
+"""Faulty RB1 submissions for course_grader's tests, made at test time from the workspace's
+own solution: each is a copy of ``my_rb1_description``, ``my_rb1_gazebo`` and ``my_rb1_ros``
+with one fault of the kinds students make, and the table says which of the guide's items
+(``course_grader/config/rb1.yaml``) that fault must cost.
+
+Interface (used by ``test_course_grader_faults.py`` and the batch test):
+
+- ``FAULTS``: name -> ``Fault`` (``what`` the fault is, ``edits``, ``lost``: the item ids it
+  must lose, exactly; ``scenarios``: the grader's scenarios that touch those items, to pass
+  to ``grade rb1 PATH --only``; ``scenario_limit``: seconds for ``--scenario-limit``, or None
+  for the course's own limit).
+- ``make_fixture(repo, name, folder)``: writes fixture ``name`` into ``folder`` (created; it
+  must not exist) from the solution in ``repo`` and returns ``folder``. An edit that no longer
+  applies to the solution (the text it changes is gone or repeated) raises ``FixtureError``:
+  the solution changed and the table must follow.
+
+Our solution is the baseline: it scores full marks (``test_course_grader.py``), so what a
+fixture loses is its fault's doing. Files only a fixture needs (the C++ rotate service, its
+CMake lines, the timed rotation) are in ``rb1_fault_fixtures/`` beside this module."""
+from __future__ import annotations
+
+import os
+import shutil
+from dataclasses import dataclass
+from typing import Dict, FrozenSet, Optional, Tuple
+
+RB1_PACKAGES = ("my_rb1_description", "my_rb1_gazebo", "my_rb1_ros")
+FILES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "rb1_fault_fixtures")
+ALL_SCENARIOS = ("display", "spawn", "drive", "scan", "rotate")
+ROTATE_ITEMS = frozenset({"rotate_degrees", "rotate_uses_odom", "rotate_answers_success"})
+ALL_ITEMS = frozenset({"display_links_tf", "wheel_joints_move", "spawn_in_start_square",
+                       "cmd_vel_moves", "scan_readable"}) | ROTATE_ITEMS
+HANG_LIMIT = 15.0   # s: the scenario limit the hanging fixture is graded with
+
+URDF = "my_rb1_description/urdf/my_rb1_robot.urdf"
+LAUNCH = "my_rb1_gazebo/launch/my_rb1_robot_warehouse.launch"
+NODE = "my_rb1_ros/src/my_rb1_ros/rotate_service.py"
+ROS_CMAKE = "my_rb1_ros/CMakeLists.txt"
+ROS_PACKAGE = "my_rb1_ros/package.xml"
+TARGET_LINE = "        target = start + math.radians(degrees)\n"
+MAIN_LINE = "def main() -> None:\n"
+
+
+class FixtureError(RuntimeError):
+    """An edit that no longer applies to the solution; the message names it."""
+
+
+@dataclass(frozen=True)
+class Replace:
+    """In ``path`` (relative to the submission), the one occurrence of ``old`` becomes
+    ``new``; ``new_file``: ``new`` is read from that file in FILES instead."""
+
+    path: str
+    old: str
+    new: str = ""
+    new_file: str = ""
+
+
+@dataclass(frozen=True)
+class Insert:
+    """A file of FILES inserted into ``path`` just before the one occurrence of ``before``."""
+
+    path: str
+    before: str
+    source: str
+
+
+@dataclass(frozen=True)
+class Copy:
+    """A file of FILES written into the submission at ``path``."""
+
+    source: str
+    path: str
+
+
+@dataclass(frozen=True)
+class Delete:
+    path: str
+
+
+@dataclass(frozen=True)
+class Fault:
+    what: str
+    edits: Tuple
+    lost: FrozenSet[str]
+    scenarios: Tuple[str, ...]
+    scenario_limit: Optional[float] = None
+
+
+def _read(name: str) -> str:
+    with open(os.path.join(FILES, name), encoding="utf-8") as stream:
+        return stream.read()
+
+
+FAULTS: Dict[str, Fault] = {
+    "laser_not_upside_down": Fault(
+        "front_laser_joint without the roll of pi: the laser stands upright",
+        (Replace(URDF, '<origin xyz="0.25 0.0 0.075" rpy="3.141592653589793 0 0"/>',
+                 '<origin xyz="0.25 0.0 0.075" rpy="0 0 0"/>'),),
+        frozenset({"display_links_tf"}), ("display",)),
+    "spawned_outside_square": Fault(
+        "spawn_model without -x/-y: the robot appears at the world's origin, outside the square",
+        (Replace(LAUNCH, "-x $(arg x) -y $(arg y) ", ""),),
+        frozenset({"spawn_in_start_square"}), ("spawn",)),
+    "wheels_misplaced": Fault(
+        "both wheel joints 0.05 m forward of the body's centre (guide: x 0)",
+        (Replace(URDF, '<origin xyz="0.0 -0.2 -0.15" rpy="0 0 0"/>',
+                 '<origin xyz="0.05 -0.2 -0.15" rpy="0 0 0"/>'),
+         Replace(URDF, '<origin xyz="0.0 0.2 -0.15" rpy="0 0 0"/>',
+                 '<origin xyz="0.05 0.2 -0.15" rpy="0 0 0"/>')),
+        frozenset({"display_links_tf"}), ("display",)),
+    "mass_not_25kg": Fault(
+        "the body alone given the robot's 25 kg: 29 kg in all",
+        (Replace(URDF, '<mass value="21.0"/>', '<mass value="25.0"/>'),),
+        frozenset({"display_links_tf"}), ("display",)),
+    "rotate_by_time": Fault(
+        "the rotation timed at a fixed speed instead of measured on /odom (no subscriber)",
+        (Replace(NODE, '        rospy.Subscriber("odom", Odometry, self._on_odometry, '
+                       'queue_size=10)\n', ""),
+         Insert(NODE, MAIN_LINE, "rotate_by_the_clock.py.in")),
+        frozenset({"rotate_uses_odom"}), ("rotate",)),
+    "answers_before_turning": Fault(
+        "answers success at once and does not turn",
+        (Replace(NODE, "            return self._turn_by(degrees, start, watch)\n",
+                 '            return f"success: rotated {degrees} degrees"\n'),),
+        frozenset({"rotate_degrees", "rotate_answers_success"}), ("rotate",)),
+    "turn_wraps_at_180": Fault(
+        "the goal wrapped into (-180, 180]: 270 turns -90 and 360 does nothing",
+        (Replace(NODE, TARGET_LINE,
+                 "        target = start + math.remainder(math.radians(degrees), 2 * math.pi)\n"),),
+        frozenset({"rotate_degrees", "rotate_answers_success"}), ("rotate",)),
+    "degrees_as_radians": Fault(
+        "the request's degrees used as radians (90 asks for 90 rad)",
+        (Replace(NODE, TARGET_LINE, "        target = start + degrees\n"),),
+        frozenset({"rotate_degrees", "rotate_answers_success"}), ("rotate",)),
+    "no_success_message": Fault(
+        "the answer says what was done but not 'success'",
+        (Replace(NODE, '                    return (f"success: rotated {degrees} degrees',
+                 '                    return (f"rotated {degrees} degrees'),),
+        frozenset({"rotate_answers_success"}), ("rotate",)),
+    "cpp_rotate_service": Fault(
+        "not a fault: the rotate service in C++ (rotate_service.cpp, built by catkin_make)",
+        (Copy("rotate_service.cpp", "my_rb1_ros/src/rotate_service.cpp"),
+         Delete("my_rb1_ros/nodes/rotate_service"),
+         Replace(ROS_CMAKE, "find_package(catkin REQUIRED COMPONENTS message_generation)",
+                 "find_package(catkin REQUIRED COMPONENTS message_generation roscpp "
+                 "geometry_msgs nav_msgs tf2)"),
+         Replace(ROS_CMAKE, "catkin_install_python(PROGRAMS nodes/rotate_service\n"
+                            "  DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION}\n)\n",
+                 new_file="rotate_service_cpp.cmake"),
+         Replace(ROS_PACKAGE, "  <exec_depend>message_runtime</exec_depend>\n",
+                 "  <exec_depend>message_runtime</exec_depend>\n"
+                 "  <depend>roscpp</depend>\n  <build_depend>tf2</build_depend>\n"
+                 "  <build_depend>geometry_msgs</build_depend>\n"
+                 "  <build_depend>nav_msgs</build_depend>\n")),
+        frozenset(), ("rotate",)),
+    "does_not_build": Fault(
+        "Rotate.srv's field type misspelt (in32): message generation fails, nothing builds",
+        (Replace("my_rb1_ros/srv/Rotate.srv", "int32 degrees", "in32 degrees"),),
+        ALL_ITEMS, ALL_SCENARIOS),
+    "node_hangs": Fault(
+        "the service never answers (waits for an event nothing sets) and the node ignores "
+        "SIGINT and SIGTERM",
+        (Replace(NODE, "                result = self._rotate(request.degrees)\n",
+                 "                never = threading.Event()\n"
+                 "                while not never.is_set():\n"
+                 "                    time.sleep(GUARD_POLL)\n"
+                 "                result = self._rotate(request.degrees)\n"),
+         Replace(NODE, "import sys\n", "import signal\nimport sys\n"),
+         Replace(NODE, '    rospy.init_node("rotate_service")\n',
+                 '    rospy.init_node("rotate_service")\n'
+                 "    signal.signal(signal.SIGINT, signal.SIG_IGN)\n"
+                 "    signal.signal(signal.SIGTERM, signal.SIG_IGN)\n")),
+        ROTATE_ITEMS, ("rotate", "scan"), HANG_LIMIT),
+}
+
+
+def _apply(folder: str, edit) -> None:
+    path = os.path.join(folder, edit.path)
+    if isinstance(edit, Copy):
+        shutil.copyfile(os.path.join(FILES, edit.source), path)
+        return
+    if not os.path.isfile(path):
+        raise FixtureError(f"{edit.path} is not in the solution")
+    if isinstance(edit, Delete):
+        os.remove(path)
+        return
+    if isinstance(edit, Insert):
+        old, new = edit.before, _read(edit.source) + edit.before
+    else:
+        old, new = edit.old, _read(edit.new_file) if edit.new_file else edit.new
+    with open(path, encoding="utf-8") as stream:
+        text = stream.read()
+    count = text.count(old)
+    if count != 1:
+        raise FixtureError(f"{edit.path}: the text the fixture changes occurs {count} times, "
+                           f"not once: {old!r}")
+    with open(path, "w", encoding="utf-8") as stream:
+        stream.write(text.replace(old, new))
+
+
+def copy_solution(repo: str, folder: str) -> str:
+    """Our RB1 solution's three packages (without tests and caches) in ``folder``."""
+    os.makedirs(folder)
+    for package in RB1_PACKAGES:
+        shutil.copytree(os.path.join(repo, package), os.path.join(folder, package),
+                        ignore=shutil.ignore_patterns("__pycache__", "test"))
+    return folder
+
+
+def make_fixture(repo: str, name: str, folder: str) -> str:
+    """Fixture ``name`` (a key of FAULTS) written into ``folder``; returns ``folder``."""
+    if name not in FAULTS:
+        raise FixtureError(f"no fixture '{name}': known are {', '.join(FAULTS)}")
+    copy_solution(repo, folder)
+    for edit in FAULTS[name].edits:
+        _apply(folder, edit)
+    return folder
