@@ -14,6 +14,11 @@ Interface (used by ``test_course_grader_faults.py`` and the batch test):
   applies to the solution (the text it changes is gone or repeated) raises ``FixtureError``:
   the solution changed and the table must follow.
 
+- ``check_evidence(name, items, scenario_limit)``: asserts that a fixture's graded items
+  (report.json's, by id) show the figure its fault must leave in the evidence;
+  ``processes_mentioning(text)``: the processes whose command line holds ``text`` (what a
+  killed scenario must not leave behind).
+
 Our solution is the baseline: it scores full marks (``test_course_grader.py``), so what a
 fixture loses is its fault's doing. Files only a fixture needs (the C++ rotate service, its
 CMake lines, the timed rotation) are in ``rb1_fault_fixtures/`` beside this module."""
@@ -31,6 +36,7 @@ ROTATE_ITEMS = frozenset({"rotate_degrees", "rotate_uses_odom", "rotate_answers_
 ALL_ITEMS = frozenset({"display_links_tf", "wheel_joints_move", "spawn_in_start_square",
                        "cmd_vel_moves", "scan_readable"}) | ROTATE_ITEMS
 HANG_LIMIT = 15.0   # s: the scenario limit the hanging fixture is graded with
+STOP_LIMIT_SLACK = 15.0   # s past limit + stop within which a killed scenario must have ended
 
 URDF = "my_rb1_description/urdf/my_rb1_robot.urdf"
 LAUNCH = "my_rb1_gazebo/launch/my_rb1_robot_warehouse.launch"
@@ -216,3 +222,92 @@ def make_fixture(repo: str, name: str, folder: str) -> str:
     for edit in FAULTS[name].edits:
         _apply(folder, edit)
     return folder
+
+
+# --- what each fault's evidence must show -------------------------------------------------
+
+
+def _laser(items, limit):
+    assert "laser roll 0.0 deg (guide 180)" in items["display_links_tf"]["evidence"]
+
+
+def _spawn(items, limit):
+    text = items["spawn_in_start_square"]["evidence"]
+    assert "at (0.0" in text or "at (-0.0" in text, text
+
+
+def _wheels(items, limit):
+    text = items["display_links_tf"]["evidence"]
+    assert "right_wheel at (0.05, -0.2, -0.15) m" in text and "left_wheel at (0.05, 0.2" in text
+
+
+def _mass(items, limit):
+    assert "29 kg in all (guide 25)" in items["display_links_tf"]["evidence"]
+
+
+def _by_time(items, limit):
+    assert "is not among the subscribers of /odom" in items["rotate_uses_odom"]["evidence"]
+
+
+def _early(items, limit):
+    text = items["rotate_degrees"]["evidence"]
+    assert "turned +0.0" in text or "turned -0.0" in text, text
+
+
+def _wraps(items, limit):
+    text = items["rotate_degrees"]["evidence"]
+    assert "asked -90 deg, turned -9" in text or "asked -90 deg, turned -8" in text, text
+    assert "asked +270 deg, turned -9" in text or "asked +270 deg, turned -8" in text, text
+
+
+def _radians(items, limit):
+    assert "failure" in items["rotate_answers_success"]["evidence"]
+
+
+def _no_success(items, limit):
+    assert "answer 'rotated -90 degrees" in items["rotate_answers_success"]["evidence"]
+
+
+def _no_build(items, limit):
+    for item in items.values():
+        assert item["awarded"] == 0
+        assert "catkin_make failed" in item["evidence"], item
+        assert "Cannot locate message [in32]" in item["evidence"], item
+
+
+def _hangs(items, limit):
+    from course_grader import course as course_file
+    rotate = items["rotate_degrees"]
+    assert "did not finish within" in rotate["evidence"], rotate
+    stop = course_file.load("rb1").limits["stop"]
+    assert limit <= rotate["seconds"] <= limit + stop + STOP_LIMIT_SLACK, rotate["seconds"]
+
+
+EVIDENCE = {"laser_not_upside_down": _laser, "spawned_outside_square": _spawn,
+            "wheels_misplaced": _wheels, "mass_not_25kg": _mass, "rotate_by_time": _by_time,
+            "answers_before_turning": _early, "turn_wraps_at_180": _wraps,
+            "degrees_as_radians": _radians, "no_success_message": _no_success,
+            "does_not_build": _no_build, "node_hangs": _hangs}
+
+
+def check_evidence(name: str, items: Dict[str, dict], scenario_limit: Optional[float]) -> None:
+    """Asserts fixture ``name``'s graded ``items`` show its fault's figure (graded with
+    ``scenario_limit``); a fixture with nothing particular to show passes."""
+    check = EVIDENCE.get(name)
+    if check:
+        check(items, scenario_limit)
+
+
+def processes_mentioning(text: str) -> list:
+    """Pids of the processes whose command line holds ``text``."""
+    found = []
+    for pid in os.listdir("/proc"):
+        if not pid.isdigit():
+            continue
+        try:
+            with open(f"/proc/{pid}/cmdline", "rb") as stream:
+                if text.encode() in stream.read():
+                    found.append(int(pid))
+        except OSError:
+            continue
+    return found
