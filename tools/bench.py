@@ -280,8 +280,10 @@ def measure_ros(env: Dict[str, str], probe: RosProbe, name: str, real_time_facto
 
 
 def measure_soak(env: Dict[str, str], minutes: float) -> Dict[str, float]:
-    """The RB1 in the warehouse with its rotate service, at real time, for ``minutes``:
-    driving back and forth and turning by service calls."""
+    """The RB1 in the course's warehouse with its rotate service, at real time, for
+    ``minutes``: driving back and forth and turning by service calls, round a 0.4 m square
+    that ends where it began (the start square has a wall behind it and walls 4-6 m away:
+    a path that drifts would end pushing against one)."""
     import rospy
     from geometry_msgs.msg import Twist
     from my_rb1_ros.srv import Rotate
@@ -294,6 +296,10 @@ def measure_soak(env: Dict[str, str], minutes: float) -> Dict[str, float]:
         rotate = rospy.ServiceProxy("/rotate_robot", Rotate)
         command = rospy.Publisher("/cmd_vel", Twist, queue_size=1)
         pid = headless.wait_until(simulator_pid, 60, "the simulator")
+        # a twist published before the diff drive is connected is lost, and with it the
+        # square's first side: the robot would then push against the wall behind it
+        headless.wait_until(lambda: command.get_num_connections() > 0, 60,
+                            "the diff drive to subscribe to /cmd_vel")
         began = time.monotonic()
         rss_start = None
         leg = 0
@@ -301,7 +307,8 @@ def measure_soak(env: Dict[str, str], minutes: float) -> Dict[str, float]:
             if rss_start is None and time.monotonic() - began >= SOAK_WARM_UP:
                 rss_start = rss_mb(pid, "VmRSS")
             twist = Twist()
-            twist.linear.x = 0.2 if leg % 2 == 0 else -0.2
+            # facing +x on even legs, +y on odd ones: +x, -y, -x, +y, and round again
+            twist.linear.x = 0.2 if leg % 4 in (0, 3) else -0.2
             command.publish(twist)
             rospy.sleep(2.0)  # simulated seconds of driving
             command.publish(Twist())
