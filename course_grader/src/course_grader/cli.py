@@ -29,7 +29,8 @@ def build_parser() -> argparse.ArgumentParser:
                                       "(several submissions: one subfolder each) "
                                       "(default: a new temporary folder)")
     parser.add_argument("--only", nargs="+", metavar="SCENARIO",
-                        help="run only these scenarios (their items alone are graded)")
+                        help="run only these scenarios (their items alone are graded); "
+                             f"each course's: {course_file.scenario_summary()}")
     parser.add_argument("--scenario-limit", type=float, metavar="SECONDS",
                         help="wall-clock limit of one scenario, after which its processes are "
                              "killed and its items score 0 (default: the course's limits.scenario)")

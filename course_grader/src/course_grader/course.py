@@ -44,6 +44,14 @@ class ScenarioSpec:
     display: bool = False
 
 
+# the report's pictures when the course file has no ``report`` section: the rviz screenshot
+# (window title waited for; s (wall) for it to show and settle; s between screenshots;
+# screenshots in a row alike; fraction of the pixels that may change between alike ones,
+# rviz's frame-rate text) and the samples at most per plotted series
+DEFAULT_REPORT = {"screenshot": {"window": "RViz", "timeout": 30.0, "interval": 0.5,
+                                 "settle": 2, "change": 0.002},
+                  "plot_points": 500}
+
 # the launch arguments given when a launch file declares them: no windows (no DISPLAY is
 # given, so the simulator is headless either way)
 DEFAULT_HEADLESS_ARGS = {"gui": "false"}
@@ -64,6 +72,7 @@ class Course:
     command_args: Dict[str, List[str]] = field(default_factory=dict)
     scenario_specs: Dict[str, ScenarioSpec] = field(default_factory=dict)
     headless_args: Dict[str, str] = field(default_factory=lambda: dict(DEFAULT_HEADLESS_ARGS))
+    report: Dict[str, Any] = field(default_factory=lambda: _report_settings({}))
 
     @property
     def total_points(self) -> float:
@@ -84,6 +93,18 @@ class Course:
 def available() -> List[str]:
     return sorted(os.path.splitext(name)[0] for name in os.listdir(CONFIG_DIR)
                   if name.endswith(".yaml"))
+
+
+def scenario_summary() -> str:
+    """Each known course with its scenarios, for the command's help ("rb1: display spawn
+    ..."); a course file that cannot be read says so instead of failing the help."""
+    parts = []
+    for name in available():
+        try:
+            parts.append(f"{name}: {' '.join(load(name).scenarios())}")
+        except CourseError as error:
+            parts.append(f"{name}: unreadable ({error})")
+    return "; ".join(parts)
 
 
 def load(name: str) -> Course:
@@ -113,7 +134,8 @@ def parse(path: str) -> Course:
                         scenario_specs=_scenario_specs(data.get("scenarios", {})),
                         headless_args={str(k): str(v).lower() if isinstance(v, bool) else str(v)
                                        for k, v in data.get("headless_args",
-                                                            DEFAULT_HEADLESS_ARGS).items()})
+                                                            DEFAULT_HEADLESS_ARGS).items()},
+                        report=_report_settings(data.get("report", {})))
     except (KeyError, TypeError, ValueError, IndexError) as error:
         raise CourseError(f"{path}: malformed course file ({type(error).__name__}: {error})") \
             from error
@@ -122,6 +144,21 @@ def parse(path: str) -> Course:
         raise CourseError(f"{path}: item ids repeat: {ids}")
     _check_scenarios(course, path)
     return course
+
+
+def _report_settings(data: Dict[str, Any]) -> Dict[str, Any]:
+    """The course file's ``report`` section over DEFAULT_REPORT."""
+    unknown = set(data) - set(DEFAULT_REPORT)
+    if unknown:
+        raise ValueError(f"'report' has unknown keys {sorted(unknown)}")
+    screenshot = dict(DEFAULT_REPORT["screenshot"], **data.get("screenshot", {}))
+    unknown = set(screenshot) - set(DEFAULT_REPORT["screenshot"])
+    if unknown:
+        raise ValueError(f"'report: screenshot' has unknown keys {sorted(unknown)}")
+    points = int(data.get("plot_points", DEFAULT_REPORT["plot_points"]))
+    if points < 2:
+        raise ValueError(f"'report: plot_points' is {points}: a plot needs at least 2")
+    return {"screenshot": screenshot, "plot_points": points}
 
 
 def _scenario_specs(data: Dict[str, Any]) -> Dict[str, ScenarioSpec]:
