@@ -1,0 +1,112 @@
+"""sim_bridge.ros_publishing.BatchedConnection on a real socket pair, no master: messages go
+straight into a socket that has room, in order; a reader that stops never blocks the
+writer, and what it reads afterwards is whole messages in order (the part of a message a
+full socket took is completed before anything else)."""
+import socket
+import struct
+import threading
+import time
+
+from sim_bridge.ros_publishing import BatchedConnection
+
+QUEUE_SIZE = 3
+MESSAGE_BYTES = 50_000  # a few of these fill a socket's buffer
+WRITE_LIMIT = 0.2  # s: longer than this, write_data waited on the socket
+
+
+class Transport:
+    """The part of rospy's TCPROSTransport that QueuedConnection uses, counting the writes
+    its writer thread makes."""
+
+    def __init__(self, sock):
+        self.socket = sock
+        self.done = False
+        self.stat_bytes = self.stat_num_msg = 0
+        self.thread_writes = 0
+
+    def set_cleanup_callback(self, callback):
+        self.cleanup = callback
+
+    def write_data(self, data):
+        self.thread_writes += 1
+        self.socket.sendall(data)
+        self.stat_bytes += len(data)
+        self.stat_num_msg += 1
+
+    def close(self):
+        self.done = True
+        self.cleanup(self)
+
+
+def frame(number, size):
+    """A TCPROS-like frame: length, then the number and padding."""
+    body = struct.pack("<I", number) + bytes(size - 4)
+    return struct.pack("<I", len(body)) + body
+
+
+def read_frames(sock, timeout):
+    """Numbers of the whole frames read until nothing arrives for ``timeout``."""
+    sock.settimeout(timeout)
+    data = b""
+    try:
+        while True:
+            chunk = sock.recv(1 << 20)
+            if not chunk:
+                break
+            data += chunk
+    except socket.timeout:
+        pass
+    numbers = []
+    while data:
+        (length,) = struct.unpack_from("<I", data)
+        assert len(data) >= 4 + length, "a message was cut short"
+        body = data[4:4 + length]
+        assert body[4:] == bytes(length - 4), "a message's bytes were mixed with another's"
+        numbers.append(struct.unpack_from("<I", body)[0])
+        data = data[4 + length:]
+    return numbers
+
+
+def connection():
+    writer, reader = socket.socketpair()
+    transport = Transport(writer)
+    return BatchedConnection(transport, QUEUE_SIZE), transport, reader
+
+
+def test_a_socket_with_room_gets_each_message_at_once_in_order():
+    queued, transport, reader = connection()
+    try:
+        for number in range(100):
+            queued.write_data(frame(number, 100))
+        assert read_frames(reader, 0.5) == list(range(100))
+        assert transport.thread_writes == 0, "messages went through the writer thread"
+        assert transport.stat_num_msg == 100
+    finally:
+        transport.close()
+        reader.close()
+
+
+def test_a_reader_that_stops_never_blocks_and_then_reads_whole_messages_in_order():
+    queued, transport, reader = connection()
+    try:
+        slowest = 0.0
+        for number in range(200):  # far more than the socket holds
+            started = time.monotonic()
+            queued.write_data(frame(number, MESSAGE_BYTES))
+            slowest = max(slowest, time.monotonic() - started)
+        assert slowest < WRITE_LIMIT, f"write_data waited {slowest:.3f} s for the reader"
+        numbers = read_frames(reader, 1.0)
+        assert numbers == sorted(numbers) and len(set(numbers)) == len(numbers)
+        assert numbers[-1] == 199, "the newest message was not delivered"
+        assert 0 < transport.thread_writes, "a full socket never handed over to the writer"
+    finally:
+        transport.close()
+        reader.close()
+
+
+def test_the_writer_thread_ends_when_the_connection_closes():
+    queued, transport, reader = connection()
+    transport.close()
+    queued._thread.join(timeout=5)
+    reader.close()
+    assert not queued._thread.is_alive()
