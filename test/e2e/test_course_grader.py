@@ -49,6 +49,9 @@ def test_our_solution_gets_full_marks(graded_solution):
     for item in items.values():
         assert item["awarded"] == item["points"], item
     assert sum(item["awarded"] for item in items.values()) == FULL_MARKS
+    # the note says the course's warehouse is the world loaded (its models by name)
+    assert any(note.startswith("the course's warehouse") and note.endswith("is loaded")
+               for note in items["spawn_in_start_square"]["notes"]), items
     assert "grade: report written:" in stdout
 
 

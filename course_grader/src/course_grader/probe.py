@@ -80,14 +80,14 @@ def spawn(course) -> Dict:
     tilt = tilt_degrees(q.x, q.y, q.z, q.w)
     in_square = inside(p.x, spec["square_x"]) and inside(p.y, spec["square_y"])
     worlds = truth.world().model_names
-    course_world = spec["course_world_model"] in worlds
+    course_world = set(spec["course_world_models"]) <= set(worlds)
     return {"checks": {"spawn_in_start_square": [
         check("inside the start square", in_square,
               f"'{model}' at ({p.x:.3f}, {p.y:.3f}) m; the square is x {spec['square_x']}, "
               f"y {spec['square_y']}"),
         check("standing", tilt <= spec["max_tilt"], f"tilted {tilt:.1f} deg (at most {spec['max_tilt']:g})"),
     ]}, "notes": {"spawn_in_start_square": [
-        f"the course's warehouse ({spec['course_world_model']}) is "
+        f"the course's warehouse ({', '.join(spec['course_world_models'])}) is "
         f"{'loaded' if course_world else 'not loaded: the launch file starts another world'}",
         f"world models: {', '.join(sorted(set(worlds) - {model}))}"]}}
 
