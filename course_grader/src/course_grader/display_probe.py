@@ -1,22 +1,33 @@
 """Task 1 measured on ``display.launch`` as typed: every link's TF as robot_description
-says (at the joint positions being published), the slider publisher naming the wheel
-joints, and a wheel position published as the sliders do turning the wheel's frame by it.
+says (at the joint positions being published), a screenshot of rviz for the report once
+that is measured, the slider publisher naming the wheel joints, and a wheel position
+published as the sliders do turning the wheel's frame by it.
 
 The slider window cannot be dragged here, so once it is seen publishing the wheel joints
-its node is stopped and the probe publishes /joint_states in its place."""
+its process is paused (SIGSTOP) while the probe publishes /joint_states in its place, and
+resumed (SIGCONT) after. Paused, not stopped: a launch file may mark the slider node
+``required="true"``, and a required node that ends takes the whole launch down (rviz,
+robot_state_publisher) for a reason that is the grader's, not the student's."""
 from __future__ import annotations
 
 import math
+import os
+import signal
 import threading
-from typing import Dict
+from typing import Dict, List
+from xmlrpc.client import ServerProxy
 
 import numpy as np
+import rosgraph
 import rosnode
 import rospy
 import tf2_ros
 from sensor_msgs.msg import JointState
 
-from course_grader.probe_tools import check, publishers_of, robot_description, wait_until
+from course_grader import screenshot
+from course_grader.probe_tools import (ProbeError, check, publishers_of, robot_description,
+                                       wait_until)
+from course_grader.ros_run import SESSION_TAG
 from urdf_tools.kinematics import link_transform
 
 
@@ -55,7 +66,7 @@ class JointStates:
             return dict(self.positions)
 
 
-def measure(course) -> Dict:
+def measure(course, folder: str = "") -> Dict:
     spec, limit = course.checks["display"], course.limits["startup"]
     model = robot_description(limit)
     root = model.root()
@@ -95,27 +106,97 @@ def measure(course) -> Dict:
         + (f"; missing {absent}" if absent else "") + (f"; off {wrong}" if wrong else ""))]
     viewers = [n for n in rosnode.get_node_names() if "rviz" in n]
     notes = [f"rviz nodes running: {viewers or 'none'}"]
-    return {"checks": {"display_links_tf": display_checks,
-                       "wheel_joints_move": _wheels(course, model, states, buffer)},
-            "notes": {"display_links_tf": notes}}
+    picture = _screenshot(course, folder, tf_ok, viewers)
+    wheel_checks, wheel_notes = _wheels(course, model, states, buffer)
+    return {"checks": {"display_links_tf": display_checks, "wheel_joints_move": wheel_checks},
+            "notes": {"display_links_tf": notes, "wheel_joints_move": wheel_notes},
+            "figures": {"display_links_tf": [picture]}}
+
+
+def _screenshot(course, folder: str, tf_ok: bool, viewers: List[str]) -> Dict:
+    """The virtual screen once TF is measured (the robot as rviz draws it), saved as
+    display.png in the report's folder; or why there is none."""
+    title = "rviz showing display.launch"
+    if not folder:
+        return {"title": title, "missing": "the probe was given no folder for pictures"}
+    spec = dict(course.report["screenshot"])
+    if not viewers:       # no rviz node: look for its window once, do not wait for it
+        spec["timeout"] = 0.0
+    shot = screenshot.take(os.environ.get("DISPLAY", ""), os.path.join(folder, screenshot.REPORT_FILE),
+                           spec["window"], spec)
+    if not shot.path:
+        return {"title": title, "missing": f"{shot.why} (rviz nodes running: "
+                                           f"{', '.join(viewers) or 'none'})"}
+    return {"title": title, "file": screenshot.REPORT_FILE, "caption": (
+        f"The windows display.launch opened on the virtual screen (Xvfb, software GL; "
+        f"{', '.join(repr(t) for t in shot.windows)}), {shot.seconds:.1f} s after the TF "
+        f"check {'passed' if tf_ok else 'failed'}: {shot.colours} colours"
+        + ("" if shot.settled else ", still changing when taken") + ".")}
+
+
+def _node_pids(nodes: List[str]) -> Dict[str, int]:
+    """The process of each node (its XML-RPC getPid), only those of this scenario: carrying
+    the probe's own SESSION_TAG, as every process the grader starts for a scenario does."""
+    master = rosgraph.Master(rospy.get_name())
+    tag = os.environ.get(SESSION_TAG)
+    pids = {}
+    for node in nodes:
+        uri = rosnode.get_api_uri(master, node, skip_cache=True)
+        if not uri:
+            raise ProbeError(f"the node {node} has no API address at the master")
+        code, message, pid = ServerProxy(uri).getPid(rospy.get_name())
+        if code != 1:
+            raise ProbeError(f"the node {node} did not give its process id: {message}")
+        if tag is not None:
+            try:
+                with open(f"/proc/{pid}/environ", "rb") as stream:
+                    ours = f"{SESSION_TAG}={tag}".encode() in stream.read().split(b"\0")
+            except OSError:
+                ours = False
+            if not ours:
+                raise ProbeError(f"the node {node} (process {pid}) is not one this scenario "
+                                 "started")
+        pids[node] = int(pid)
+    return pids
+
+
+def _signal_all(pids: Dict[str, int], number: int) -> None:
+    for pid in pids.values():
+        try:
+            os.kill(pid, number)
+        except ProcessLookupError:
+            pass
 
 
 def _wheels(course, model, states, buffer):
-    spec, limit = course.checks["display"], course.limits["startup"]
+    """The wheel item's checks and notes."""
     wheels = [w for w in course.urdf["wheels"]["links"] if w in model.links]
     joints = [model.parent_joint(w) for w in wheels]
     joints = [j for j in joints if j is not None and j.movable]
     if not joints:
-        return [check("wheel joints", False, f"no movable joint above {wheels or 'the wheels'}")]
+        return [check("wheel joints", False,
+                      f"no movable joint above {wheels or 'the wheels'}")], []
     names = [j.name for j in joints]
     publishers = [n for n in publishers_of("/joint_states") if n != rospy.get_name()]
     published = set(names) <= set(states.snapshot())
     checks = [check("sliders publish the wheel joints", published and bool(publishers),
                     f"{publishers or 'nobody'} publish(es) /joint_states with "
                     f"{sorted(set(names) & set(states.snapshot()))}")]
-    rosnode.kill_nodes(publishers)
-    wait_until(lambda: not [n for n in publishers_of("/joint_states") if n != rospy.get_name()],
-               limit, f"{publishers} to stop publishing /joint_states")
+    pids = _node_pids(publishers)
+    _signal_all(pids, signal.SIGSTOP)
+    try:
+        return checks + [_turn_wheels(course, model, joints, buffer)], [
+            f"{', '.join(publishers)} (process {', '.join(map(str, pids.values()))}) paused "
+            "(SIGSTOP) while the probe published the wheel position, resumed (SIGCONT) after"]
+    finally:
+        _signal_all(pids, signal.SIGCONT)
+
+
+def _turn_wheels(course, model, joints, buffer) -> Dict:
+    """Publishes the wheel joints at ``wheel_angle`` on /joint_states, as the sliders do;
+    the check that each wheel's frame turned by it."""
+    spec, limit = course.checks["display"], course.limits["startup"]
+    names = [j.name for j in joints]
     angle = spec["wheel_angle"]
     command = JointState(name=[j.name for j in model.joints.values() if j.movable])
     command.position = [angle if n in names else 0.0 for n in command.name]
@@ -138,9 +219,8 @@ def _wheels(course, model, states, buffer):
         moved = True
     except RuntimeError:
         moved = False
-    checks.append(check(
+    return check(
         "wheel frames turn with the joint", moved,
         f"{', '.join(names)} at {angle:g} rad: frames within "
         + ", ".join(f"{deg:.2f}" for deg in turned.values()) + f" deg of it "
-        f"(tolerance {spec['wheel_tolerance']:g})"))
-    return checks
+        f"(tolerance {spec['wheel_tolerance']:g})")

@@ -10,9 +10,9 @@ import time
 from dataclasses import dataclass
 from typing import Callable, Dict, List, Optional
 
-from course_grader import ros_run, submission, urdf_checks
+from course_grader import plots, ros_run, screenshot, submission, urdf_checks
 from course_grader.course import Course, CourseError, ScenarioSpec
-from course_grader.results import Check, ItemResult, Report, failed_item, judge
+from course_grader.results import Check, Figure, ItemResult, Report, failed_item, judge
 from urdf_tools import UrdfError
 
 PACKAGE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -58,8 +58,10 @@ def call_named(target: str, *args):
 
 
 def scenario_results(course: Course, scenario: str, env: Dict[str, str],
-                     log_dir: str) -> List[ItemResult]:
-    """Runs ``scenario`` in a fresh simulation; one result per item it judges."""
+                     log_dir: str, out: str = "") -> List[ItemResult]:
+    """Runs ``scenario`` in a fresh simulation; one result per item it judges, with the
+    pictures the probe wrote and the plots of its samples (in ``out``, the report's
+    folder, when given)."""
     items = course.items_of(scenario)
     spec = scenario_spec(course, scenario)
     started = time.monotonic()
@@ -73,25 +75,54 @@ def scenario_results(course: Course, scenario: str, env: Dict[str, str],
             for key in spec.commands:
                 package, launch_file = course.commands[key]
                 names.append(key)
+                # under a screen the command runs as typed: its windows (rviz, the sliders)
+                # are what the scenario grades and pictures
+                headless = [] if spec.display else \
+                    _launch_args(env, package, launch_file, course.headless_args)
                 session.launch(key, package, launch_file,
-                               _launch_args(env, package, launch_file, course.headless_args)
-                               + course.command_args.get(key, []))
+                               headless + course.command_args.get(key, []))
                 if key in spec.ready and key != spec.commands[-1]:
                     session.wait_for_topic(spec.ready[key], course.limits["startup"])
             remaining = limit - (time.monotonic() - started)
-            answer = session.probe(scenario, course.source, max(1.0, remaining))
+            answer = session.probe(scenario, course.source, max(1.0, remaining), out)
             session.check_alive()
             trouble = session.trouble(names)
     except ros_run.RunError as error:
         trouble = _trouble_after(log_dir, names)
         seconds = time.monotonic() - started
-        return [failed_item(item, str(error), trouble, seconds) for item in items]
+        return _not_pictured(spec, [failed_item(item, str(error), trouble, seconds)
+                                    for item in items], str(error))
     seconds = time.monotonic() - started
     if "error" in answer:
-        return [failed_item(item, answer["error"], trouble, seconds) for item in items]
+        return _not_pictured(spec, [failed_item(item, answer["error"], trouble, seconds)
+                                    for item in items], answer["error"])
     checks, notes = answer.get("checks", {}), answer.get("notes", {})
-    return [judge(item, [Check.from_dict(c) for c in checks.get(item.id, [])],
-                  notes.get(item.id, []), trouble, seconds) for item in items]
+    results = [judge(item, [Check.from_dict(c) for c in checks.get(item.id, [])],
+                     notes.get(item.id, []), trouble, seconds) for item in items]
+    if out:
+        add_figures(results, answer, out)
+    return results
+
+
+def _not_pictured(spec: ScenarioSpec, results: List[ItemResult],
+                  reason: str) -> List[ItemResult]:
+    """A scenario with a screen that failed: its first item says why it has no picture."""
+    if spec.display and results:
+        results[0].figures.append(Figure("rviz screenshot", missing=(
+            f"none: the scenario failed before or while it was measured ({reason})")))
+    return results
+
+
+def add_figures(results: List[ItemResult], answer: Dict, out: str) -> None:
+    """The probe's pictures (``figures``: files it wrote into ``out``, or why none) and a
+    plot of each of its ``samples`` (written into ``out``), under the items they show."""
+    by_id = {r.item.id: r for r in results}
+    for item_id, figures in answer.get("figures", {}).items():
+        if item_id in by_id:
+            by_id[item_id].figures += [Figure.from_dict(f) for f in figures]
+    for kind, data in answer.get("samples", {}).items():
+        target = by_id.get(data.get("item")) or results[0]
+        target.figures.append(plots.draw(kind, data, out))
 
 
 @dataclass
@@ -134,6 +165,31 @@ def _trouble_after(log_dir: str, names: List[str]) -> List[str]:
                 lines += [f"{name}: {line.rstrip()}" for line in log
                           if ros_run.TROUBLE.search(line)][-ros_run.LOG_LINES:]
     return lines
+
+
+def no_screenshot(course: Course, wanted: List[str]) -> List[Figure]:
+    """Why the report will have no rviz screenshot, when that is known before anything runs:
+    no scenario of the course opens rviz, or the one that does is not among ``wanted``."""
+    shown = [s for s in course.scenarios() if scenario_spec(course, s).display]
+    if not shown:
+        headless = " ".join(f"{k}:={v}" for k, v in course.headless_args.items())
+        return [Figure("rviz screenshot", missing=(
+            "none: no scenario of this course opens rviz; its launch files run without a "
+            f"screen ({headless} where they declare them)"))]
+    if not set(shown) & set(wanted):
+        return [Figure("rviz screenshot", missing=(
+            f"none: the scenario that opens rviz ({', '.join(shown)}) was not run (--only)"))]
+    return []
+
+
+def _forget_pictures(out: str) -> None:
+    """Removes the pictures an earlier grading left in ``out`` (a report names only its
+    own)."""
+    for name in [screenshot.REPORT_FILE] + [f"{kind}.svg" for kind in plots.KINDS]:
+        try:
+            os.remove(os.path.join(out, name))
+        except FileNotFoundError:
+            pass
 
 
 def add_urdf_evidence(course: Course, results: List[ItemResult], description_dir: Optional[str]):
@@ -192,6 +248,8 @@ def _grade_in(course, path, out, platform_setup, progress, scenarios, workspace,
     report.build = built.summary
     progress(built.summary)
     wanted = scenarios or course.scenarios()
+    _forget_pictures(out)
+    report.figures += no_screenshot(course, wanted)
     if not built.ok:
         report.results = [failed_item(item, built.summary, built.log_tail)
                           for item in course.items if item.scenario in wanted]
@@ -220,7 +278,8 @@ def _grade_in(course, path, out, platform_setup, progress, scenarios, workspace,
                                for item in items]
             continue
         progress(f"scenario {scenario}: {', '.join(i.id for i in items)}")
-        results = scenario_results(course, scenario, env, os.path.join(out, "logs", scenario))
+        results = scenario_results(course, scenario, env, os.path.join(out, "logs", scenario),
+                                   out)
         progress(f"scenario {scenario}: {sum(r.awarded for r in results):g} of "
                  f"{sum(r.item.points for r in results):g} in {results[0].seconds:.0f} s")
         report.results += results

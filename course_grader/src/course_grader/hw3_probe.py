@@ -16,7 +16,8 @@ import rospy
 from tf import transformations
 
 from course_grader.hw3_measures import FlipCount, planar_travel, still_points
-from course_grader.probe import Truth
+from course_grader.measures import thin
+from course_grader.probe import PoseRecorder, Truth
 from course_grader.probe_tools import ProbeError, check, wait_until
 from course_grader.ros_run import declared_args
 
@@ -85,32 +86,6 @@ def world(course, scenario: str) -> Dict:
 # --- ddrive.launch flip:=true: flips in ground truth --------------------------------------
 
 
-class PoseRecorder:
-    """A model's true position and body up axis (z of its local z) from
-    /gazebo/model_states, against simulated time."""
-
-    def __init__(self, model: str):
-        from gazebo_msgs.msg import ModelStates
-        self.model = model
-        self.samples: List[Tuple[float, float, float, float]] = []   # t, x, y, up_z
-        self.lock = threading.Lock()
-        self.subscriber = rospy.Subscriber("/gazebo/model_states", ModelStates, self._on_states,
-                                           queue_size=10)
-
-    def _on_states(self, message) -> None:
-        if self.model not in message.name:
-            return
-        pose = message.pose[message.name.index(self.model)]
-        q = pose.orientation
-        up_z = transformations.quaternion_matrix([q.x, q.y, q.z, q.w])[2, 2]
-        with self.lock:
-            self.samples.append((rospy.get_time(), pose.position.x, pose.position.y, up_z))
-
-    def copy(self):
-        with self.lock:
-            return list(self.samples)
-
-
 def flip(course, scenario: str) -> Dict:
     spec, limit = course.checks[scenario], course.limits["startup"]
     truth = Truth(limit)
@@ -124,8 +99,7 @@ def flip(course, scenario: str) -> Dict:
                f"{spec['duration']} s of simulated time")
     samples = [s for s in recorder.copy() if s[0] <= end]
     counter = FlipCount(spec["dead_band"])
-    for sample in samples:
-        counter.update(sample[3])
+    flipped_at = [sample[0] for sample in samples if counter.update(sample[3])]
     travel = planar_travel([(s[1], s[2]) for s in samples])
     span = samples[-1][0] - samples[0][0]
     return {"checks": {"flips": [
@@ -135,7 +109,10 @@ def flip(course, scenario: str) -> Dict:
         check("keeps driving", travel >= spec["min_travel"],
               f"travelled {travel:.1f} m in truth (at least {spec['min_travel']:g})"),
     ]}, "notes": {"flips": [f"{len(samples)} ground-truth samples; up axis z from "
-                            f"{min(s[3] for s in samples):+.2f} to {max(s[3] for s in samples):+.2f}"]}}
+                            f"{min(s[3] for s in samples):+.2f} to {max(s[3] for s in samples):+.2f}"]},
+        "samples": {"flip": {"item": "flips", "dead_band": spec["dead_band"], "flips": flipped_at,
+                             "samples": thin([(s[0], s[3]) for s in samples],
+                                             course.report["plot_points"])}}}
 
 
 # --- arm.launch: the step service in ground truth ------------------------------------------

@@ -1,6 +1,6 @@
 """Figures computed from ground-truth samples, without ROS: heading unwrapped across ±180°,
 when a turn stopped, whether the robot is still, tilt, and whether a point lies in a
-rectangle. The probes feed them what the simulator reports."""
+rectangle; samples thinned for a plot. The probes feed them what the simulator reports."""
 from __future__ import annotations
 
 import math
@@ -29,6 +29,18 @@ def unwrap(previous: Optional[float], yaw: float) -> float:
 
 def inside(value: float, bounds: Sequence[float]) -> bool:
     return bounds[0] <= value <= bounds[1]
+
+
+def thin(samples: Sequence, most: int) -> List:
+    """At most ``most`` of ``samples``, evenly spread by index, the first and the last kept
+    (a plot needs no more points than it is wide)."""
+    samples = list(samples)
+    if most < 2:
+        raise ValueError(f"cannot thin samples to {most} (at least 2)")
+    if len(samples) <= most:
+        return samples
+    chosen = sorted({round(i * (len(samples) - 1) / (most - 1)) for i in range(most)})
+    return [samples[i] for i in chosen]
 
 
 def is_still(samples: List[Sample], window: float, speed: float) -> bool:

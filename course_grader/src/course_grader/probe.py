@@ -1,7 +1,10 @@
 """The measuring side of a scenario, run as ``python3 -m course_grader.probe SCENARIO
-COURSE_YAML`` in a child process against that scenario's master (rospy can join one
-master per process). It prints one JSON line: ``{"checks": {item: [check...]},
-"notes": {item: [text...]}}`` or ``{"error": text}``. Every wait is bounded."""
+COURSE_YAML [FOLDER]`` in a child process against that scenario's master (rospy can join
+one master per process). It prints one JSON line: ``{"checks": {item: [check...]},
+"notes": {item: [text...]}}`` or ``{"error": text}``, and, for the report, ``"samples":
+{plot kind: {"item": id, ...the ground-truth samples measured}}`` (drawn by
+course_grader.plots) and ``"figures": {item: [{"title", "file" or "missing", "caption"}]}``
+for pictures the probe wrote into FOLDER (the report's). Every wait is bounded."""
 from __future__ import annotations
 
 import importlib
@@ -10,15 +13,16 @@ import math
 import sys
 import threading
 import traceback
-from typing import Callable, Dict, List
+from typing import Callable, Dict, List, Tuple
 
 import rospy
+from tf import transformations
 
 from course_grader import course as course_file
 from course_grader.probe_tools import (ProbeError, check, publishers_of, robot_description,
                                        subscribers_of, wait_until)
-from course_grader.measures import (Rotation, inside, is_still, stop_time, tilt_degrees,
-                                    unwrap, yaw_of)
+from course_grader.measures import (Rotation, inside, is_still, stop_time, thin,
+                                    tilt_degrees, unwrap, yaw_of)
 
 # --- the simulator ---------------------------------------------------------------------
 
@@ -70,7 +74,37 @@ def _movable_joints(timeout: float) -> List[str]:
     return [j.name for j in model.joints.values() if j.movable] or list(model.joints)
 
 
-def spawn(course) -> Dict:
+class PoseRecorder:
+    """A model's true position and body up axis (z of its local z) from
+    /gazebo/model_states, against simulated time."""
+
+    def __init__(self, model: str):
+        from gazebo_msgs.msg import ModelStates
+        self.model = model
+        self.samples: List[Tuple[float, float, float, float]] = []   # t, x, y, up_z
+        self.lock = threading.Lock()
+        self.subscriber = rospy.Subscriber("/gazebo/model_states", ModelStates, self._on_states,
+                                           queue_size=10)
+
+    def _on_states(self, message) -> None:
+        if self.model not in message.name:
+            return
+        pose = message.pose[message.name.index(self.model)]
+        q = pose.orientation
+        up_z = transformations.quaternion_matrix([q.x, q.y, q.z, q.w])[2, 2]
+        with self.lock:
+            self.samples.append((rospy.get_time(), pose.position.x, pose.position.y, up_z))
+
+    def copy(self):
+        with self.lock:
+            return list(self.samples)
+
+
+# Every built-in probe takes the course and the folder where it may write pictures for the
+# report (only display's does).
+
+
+def spawn(course, folder: str = "") -> Dict:
     spec, limit = course.checks["spawn"], course.limits["startup"]
     truth = Truth(limit)
     model = truth.find_robot(_movable_joints(limit))
@@ -92,11 +126,12 @@ def spawn(course) -> Dict:
         f"world models: {', '.join(sorted(set(worlds) - {model}))}"]}}
 
 
-def drive(course) -> Dict:
+def drive(course, folder: str = "") -> Dict:
     from geometry_msgs.msg import Twist
     spec, limit = course.checks["drive"], course.limits["startup"]
     truth = Truth(limit)
-    truth.find_robot(_movable_joints(limit))
+    recorder = PoseRecorder(truth.find_robot(_movable_joints(limit)))
+    wait_until(recorder.copy, limit, "/gazebo/model_states with the robot")
     publisher = rospy.Publisher("/cmd_vel", Twist, queue_size=1)
     wait_until(lambda: publisher.get_num_connections() > 0, limit, "a subscriber of /cmd_vel")
     start = truth.pose().position
@@ -112,13 +147,19 @@ def drive(course) -> Dict:
     end = truth.pose().position
     publisher.publish(Twist())
     moved = math.hypot(end.x - start.x, end.y - start.y)
+    path = [(x, y) for t, x, y, _ in recorder.copy() if began <= t <= target]
     return {"checks": {"cmd_vel_moves": [check(
         "moves on /cmd_vel", moved >= spec["min_distance"],
         f"moved {moved:.3f} m in truth in {truth.sim_time() - began:.1f} s at "
-        f"{spec['speed']:g} m/s on /cmd_vel (at least {spec['min_distance']:g})")]}}
+        f"{spec['speed']:g} m/s on /cmd_vel (at least {spec['min_distance']:g})")]},
+        "samples": {"drive": {
+            "item": "cmd_vel_moves",
+            "command": f"/cmd_vel at {spec['speed']:g} m/s for {spec['duration']:g} s",
+            "path": thin([(start.x, start.y)] + path + [(end.x, end.y)],
+                         course.report["plot_points"])}}}
 
 
-def scan(course) -> Dict:
+def scan(course, folder: str = "") -> Dict:
     from sensor_msgs.msg import LaserScan
     spec = course.checks["scan"]
     try:
@@ -167,7 +208,7 @@ class YawRecorder:
             return self.samples[-1] if self.samples else None
 
 
-def rotate(course) -> Dict:
+def rotate(course, folder: str = "") -> Dict:
     import rosservice
     spec, limit = course.checks["rotate"], course.limits["startup"]
     truth = Truth(limit)
@@ -185,6 +226,7 @@ def rotate(course) -> Dict:
         return is_still(recorder.since(since), spec["still_window"], spec["still_speed"])
 
     rotations: List[Rotation] = []
+    plotted: List[Dict] = []        # per request: its true yaw samples, in degrees
     failures: List[str] = []
     for index, degrees in enumerate(spec["requests"]):
         now = rospy.get_time()
@@ -210,6 +252,10 @@ def rotate(course) -> Dict:
         after = min(answer["at"], rospy.get_time())
         wait_until(lambda: still(after), limit, f"the robot to stop after rotate {degrees}")
         samples = recorder.since(began)
+        plotted.append({"requested": float(degrees), "began": began,
+                        "start": math.degrees(yaw0),
+                        "answered_at": answer["at"] if math.isfinite(answer["at"]) else None,
+                        "samples": [(t, math.degrees(yaw)) for t, yaw in samples]})
         rotations.append(Rotation(
             requested=float(degrees), turned=math.degrees(samples[-1][1] - yaw0),
             answer=text.strip(), answered_at=answer["at"],
@@ -228,6 +274,9 @@ def rotate(course) -> Dict:
     success_ok = [check(f"answer to {r.requested:+.0f}",
                         r.answered_when_done(spec["tolerance"], spec["answer_lag"]), describe(r))
                   for r in rotations]
+    per_request = max(2, course.report["plot_points"] // max(1, len(plotted)))
+    for request in plotted:
+        request["samples"] = thin(request["samples"], per_request)
     return {"checks": {
         "rotate_degrees": degrees_ok,
         "rotate_uses_odom": [check(f"subscribes to {spec['odom_topic']}", uses_odom,
@@ -235,28 +284,29 @@ def rotate(course) -> Dict:
                                    f"{'is' if uses_odom else 'is not'} among the subscribers of "
                                    f"{spec['odom_topic']}: {odom_subscribers or 'none'}")],
         "rotate_answers_success": success_ok,
-    }, "notes": {"rotate_degrees": failures}}
+    }, "notes": {"rotate_degrees": failures},
+        "samples": {"rotate": {"item": "rotate_degrees", "requests": plotted}}}
 
 
 # --- display.launch (task 1) -------------------------------------------------------------
 
 
-def display(course) -> Dict:
+def display(course, folder: str = "") -> Dict:
     from course_grader.display_probe import measure
-    return measure(course)
+    return measure(course, folder)
 
 
 SCENARIOS = {"display": display, "spawn": spawn, "drive": drive, "scan": scan,
              "rotate": rotate}
 
 
-def measure(scenario: str, course) -> Dict:
+def measure(scenario: str, course, folder: str = "") -> Dict:
     """The scenario's probe: the course file's ``module:function`` when it names one,
-    else the built-in RB1 probe of that name."""
+    else the built-in RB1 probe of that name (given ``folder`` for its pictures)."""
     spec = course.scenario_specs.get(scenario)
     target = spec.probe if spec is not None else scenario
     if ":" not in target:
-        return SCENARIOS[target](course)
+        return SCENARIOS[target](course, folder)
     module_name, _, function = target.partition(":")
     return getattr(importlib.import_module(module_name), function)(course, scenario)
 
@@ -264,9 +314,10 @@ def measure(scenario: str, course) -> Dict:
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     scenario, config_path = argv[0], argv[1]
+    folder = argv[2] if len(argv) > 2 else ""
     rospy.init_node("course_grader_probe", anonymous=True, disable_signals=True)
     try:
-        answer = measure(scenario, course_file.parse(config_path))
+        answer = measure(scenario, course_file.parse(config_path), folder)
     except Exception as error:  # pylint: disable=broad-except
         traceback.print_exc()
         answer = {"error": f"{type(error).__name__}: {error}"}

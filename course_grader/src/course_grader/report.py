@@ -1,4 +1,6 @@
-"""The grading report: a plain-text table for the terminal, Markdown and JSON files."""
+"""The grading report: a plain-text table for the terminal, Markdown (with the pictures:
+rviz's screenshot and the plots of the measured motion, files beside it) and JSON (which
+lists those files) for a gradebook."""
 from __future__ import annotations
 
 import json
@@ -6,7 +8,7 @@ import os
 import textwrap
 from typing import List
 
-from course_grader.results import Report
+from course_grader.results import Figure, Report
 
 # columns of the terminal table: item, points, awarded, evidence
 EVIDENCE_WIDTH = 70
@@ -46,6 +48,7 @@ def markdown(report: Report) -> str:
     if report.build:
         out.append(f"- build: {report.build}")
     out += [f"- {note}" for note in report.notes]
+    out += [f"- {f.title}: {f.missing}" for f in report.figures if not f.file]
     out += ["", "| task | item | points | awarded | evidence |", "|---|---|---|---|---|"]
     for r in report.results:
         evidence = r.evidence().replace("|", "\\|")
@@ -56,9 +59,23 @@ def markdown(report: Report) -> str:
                     f"{_points(r.item.points)})", ""]
         out += [f"- {'pass' if c.passed else 'FAIL'}: {c.name}: {c.evidence}" for c in r.checks]
         out += [f"- note: {note}" for note in r.notes]
+        for figure in r.figures:
+            out += _figure(figure)
         if r.log:
             out += ["", "```", *r.log, "```"]
     return "\n".join(out) + "\n"
+
+
+def _figure(figure: Figure) -> List[str]:
+    """A picture embedded (its file is beside report.md), or why there is none."""
+    if not figure.file:
+        return [f"- no picture ({figure.title}): {figure.missing}"]
+    lines = ["", f"![{_alt(figure.title)}]({figure.file})"]
+    return lines + (["", f"*{figure.caption}*"] if figure.caption else [])
+
+
+def _alt(text: str) -> str:
+    return text.replace("[", "(").replace("]", ")")
 
 
 def write(report: Report, folder: str) -> List[str]:

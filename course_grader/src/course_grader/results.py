@@ -1,9 +1,10 @@
-"""What grading found: each item's points awarded, the figure measured (evidence) and, on
-a failure, the log lines that explain it; totals. No ROS here."""
+"""What grading found: each item's points awarded, the figure measured (evidence), the
+pictures that show it (a screenshot, plots of the measured motion) and, on a failure, the
+log lines that explain it; totals. No ROS here."""
 from __future__ import annotations
 
 from dataclasses import asdict, dataclass, field
-from typing import Dict, Iterable, List, Optional
+from typing import Dict, Iterable, List, Optional, Tuple
 
 from course_grader.course import Course, Item
 
@@ -26,6 +27,22 @@ class Check:
 
 
 @dataclass
+class Figure:
+    """A picture for the report: a file in the report's folder (``file``, a name relative to
+    it), or, when there is none, why (``missing``)."""
+
+    title: str
+    file: str = ""
+    caption: str = ""
+    missing: str = ""
+
+    @staticmethod
+    def from_dict(data: Dict) -> "Figure":
+        return Figure(str(data["title"]), str(data.get("file", "")),
+                      str(data.get("caption", "")), str(data.get("missing", "")))
+
+
+@dataclass
 class ItemResult:
     item: Item
     awarded: float
@@ -33,6 +50,7 @@ class ItemResult:
     notes: List[str] = field(default_factory=list)   # supporting evidence, not scored
     log: List[str] = field(default_factory=list)     # lines explaining a failure
     seconds: float = 0.0                             # wall time of the scenario
+    figures: List[Figure] = field(default_factory=list)
 
     @property
     def passed(self) -> bool:
@@ -65,6 +83,7 @@ class Report:
     build: Optional[str] = None      # one line on the submission's build
     seconds: float = 0.0             # wall time of the whole grading
     notes: List[str] = field(default_factory=list)
+    figures: List[Figure] = field(default_factory=list)   # of no one item (why none)
 
     @property
     def awarded(self) -> float:
@@ -80,6 +99,11 @@ class Report:
                 return result
         raise KeyError(item_id)
 
+    def all_figures(self) -> List[Tuple[Optional[str], Figure]]:
+        """(item id or None, figure) for every figure, items' in the items' order."""
+        return ([(r.item.id, f) for r in self.results for f in r.figures]
+                + [(None, f) for f in self.figures])
+
     def to_dict(self) -> Dict:
         return {
             "course": self.course.name,
@@ -94,5 +118,7 @@ class Report:
                 "points": r.item.points, "awarded": r.awarded, "evidence": r.evidence(),
                 "checks": [asdict(c) for c in r.checks], "notes": r.notes, "log": r.log,
                 "seconds": round(r.seconds, 1),
+                "figures": [f.file for f in r.figures if f.file],
             } for r in self.results],
+            "figures": [dict(asdict(f), item=item) for item, f in self.all_figures()],
         }

@@ -177,10 +177,13 @@ class Session:
                 raise RunError(f"'{name}' ended (exit status {process.returncode}) "
                                f"before the checks; see {log_path}")
 
-    def probe(self, scenario: str, config_path: str, timeout: float) -> Dict:
-        """Runs ``python3 -m course_grader.probe`` against this master; its JSON answer."""
+    def probe(self, scenario: str, config_path: str, timeout: float,
+              folder: str = "") -> Dict:
+        """Runs ``python3 -m course_grader.probe`` against this master (``folder``: where it
+        may write pictures for the report); its JSON answer."""
         log_path = os.path.join(self.log_dir, "probe.log")
-        command = [PYTHON, "-m", "course_grader.probe", scenario, config_path]
+        command = [PYTHON, "-m", "course_grader.probe", scenario, config_path,
+                   *([folder] if folder else [])]
         with open(log_path, "w", encoding="utf-8") as log:
             try:
                 done = subprocess.run(command, env=self.env, stdout=subprocess.PIPE, stderr=log,
