@@ -17,7 +17,8 @@ Interface (used by ``test_course_grader_faults.py`` and the batch test):
 - ``check_evidence(name, items, scenario_limit)``: asserts that a fixture's graded items
   (report.json's, by id) show the figure its fault must leave in the evidence;
   ``processes_mentioning(text)``: the processes whose command line holds ``text`` (what a
-  killed scenario must not leave behind).
+  killed scenario must not leave behind); ``processes_reading(name, holds)``: the same test
+  on any /proc/<pid>/ file (``environ``: a batch's marker).
 
 Our solution is the baseline: it scores full marks (``test_course_grader.py``), so what a
 fixture loses is its fault's doing. Files only a fixture needs (the C++ rotate service, its
@@ -298,16 +299,21 @@ def check_evidence(name: str, items: Dict[str, dict], scenario_limit: Optional[f
         check(items, scenario_limit)
 
 
-def processes_mentioning(text: str) -> list:
-    """Pids of the processes whose command line holds ``text``."""
+def processes_reading(name: str, holds) -> list:
+    """Pids of the processes whose /proc/<pid>/``name`` (cmdline, environ) ``holds(bytes)``."""
     found = []
     for pid in os.listdir("/proc"):
         if not pid.isdigit():
             continue
         try:
-            with open(f"/proc/{pid}/cmdline", "rb") as stream:
-                if text.encode() in stream.read():
+            with open(f"/proc/{pid}/{name}", "rb") as stream:
+                if holds(stream.read()):
                     found.append(int(pid))
         except OSError:
             continue
     return found
+
+
+def processes_mentioning(text: str) -> list:
+    """Pids of the processes whose command line holds ``text``."""
+    return processes_reading("cmdline", lambda cmdline: text.encode() in cmdline)

@@ -21,7 +21,8 @@ import time
 import pytest
 from course_grader import course as course_file
 
-from rb1_fault_fixtures import FAULTS, check_evidence, make_fixture, processes_mentioning
+from rb1_fault_fixtures import (FAULTS, check_evidence, make_fixture, processes_mentioning,
+                                processes_reading)
 
 JOBS = 2
 BATCH_TIMEOUT = 900      # s: one batch command, bounded
@@ -45,17 +46,8 @@ RESULTS = os.path.join("test_results", "e2e", "course_grader", "faults")
 
 def batch_processes():
     """Processes carrying any batch's marker (the suite runs one batch at a time)."""
-    found = []
-    for entry in os.listdir("/proc"):
-        if not entry.isdigit():
-            continue
-        try:
-            with open(f"/proc/{entry}/environ", "rb") as environ:
-                if any(v.startswith(MARKER.encode()) for v in environ.read().split(b"\0")):
-                    found.append(int(entry))
-        except OSError:
-            continue
-    return found
+    return processes_reading("environ", lambda environ: any(
+        variable.startswith(MARKER.encode()) for variable in environ.split(b"\0")))
 
 
 class Batch:
