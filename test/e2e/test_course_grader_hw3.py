@@ -3,13 +3,15 @@ me495_hw3 PATH` on a copy of the workspace's own diff_drive and arm_move (full m
 with `--only`, on two copies with one fault each of the kinds students make: ddrive.launch
 without a `paused` argument loses exactly 'ddrive.launch paused:=true starts paused'; a step
 service that answers SUCCESS without planning or moving (so it accepts a target in the
-floor) loses exactly the two step items, judged on the simulator's gripper point."""
+floor) loses exactly the two step items, judged on the simulator's gripper point. The
+report plots the flips from the true orientation and says why it has no rviz screenshot."""
 import json
 import os
 import re
 import shutil
 import subprocess
 import time
+import xml.etree.ElementTree as ET
 
 import pytest
 
@@ -20,6 +22,8 @@ PAUSED_VALUE = '<arg name="paused" value="$(arg paused)"/>'
 # the line of arm_move's mover the step fixture answers before: success, nothing planned
 STEP_LINE = "        target = (request.position.x, request.position.y, request.position.z)\n"
 STEP_LIE = "        return Codes.SUCCESS, \"step: done\"\n"
+FLIP_POINTS = 100         # the flip plot draws at least this many samples of its 20 s
+SVG = "{http://www.w3.org/2000/svg}"
 
 
 def copy_solution(repo, folder):
@@ -51,11 +55,11 @@ def graded_solution(repo, tmp_path_factory):
     submission = copy_solution(repo, str(tmp_path_factory.mktemp("hw3") / "submission"))
     results = os.path.join(repo, "test_results", "e2e", "course_grader_hw3", "solution")
     shutil.rmtree(results, ignore_errors=True)
-    return grade(submission, results)
+    return grade(submission, results) + (results,)
 
 
 def test_our_solution_gets_full_marks(graded_solution):
-    items, stdout, seconds = graded_solution
+    items, stdout, seconds, _ = graded_solution
     print(f"grading our hw3 solution took {seconds:.0f} s")
     assert set(items) == {"layout", "xacro_yaml_gazebo", "world_contents", "ddrive_paused",
                           "flips", "arm_test", "step_floor_error", "step_reachable"}
@@ -108,3 +112,21 @@ def test_a_step_service_that_always_succeeds_loses_exactly_the_step_items(repo, 
         {i: faulty[i]["evidence"] for i in faulty}
     assert "answered code 1" in faulty["step_floor_error"]["evidence"]
     assert "mm from the target" in faulty["step_reachable"]["evidence"]
+
+
+def test_the_report_plots_the_flips_and_says_why_there_is_no_screenshot(graded_solution):
+    items, _, _, out = graded_solution
+    root = ET.parse(os.path.join(out, "flip.svg")).getroot()
+    points = sum(len(line.get("points").split()) for line in root.iter(f"{SVG}polyline"))
+    titles = [t.text for t in root.iter(f"{SVG}text")]
+    flips = int(items["flips"]["evidence"].split("flipped ")[1].split()[0])
+    print(f"flip.svg: {points} points, {flips} flips")
+    assert points >= FLIP_POINTS
+    assert f"flip: the body's up axis, {flips} flips" in titles
+    # each flip is marked by its number above the plot
+    assert all(str(n) in titles for n in range(1, flips + 1))
+    with open(os.path.join(out, "report.md"), encoding="utf-8") as stream:
+        text = stream.read()
+    assert "](flip.svg)" in text
+    assert "rviz screenshot: none: no scenario of this course opens rviz" in text
+    assert not os.path.exists(os.path.join(out, "display.png"))

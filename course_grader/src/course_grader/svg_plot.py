@@ -1,6 +1,7 @@
 """Line charts as SVG text, for the grading report's plots (no matplotlib on the grading
 machines): one chart is axes with round-numbered ticks, polylines, point markers, dashed
-reference lines, labelled vertical marks and a legend. Pure Python, no ROS."""
+reference lines, labelled vertical marks and a legend (a row under the plot). Pure Python,
+no ROS."""
 from __future__ import annotations
 
 import math
@@ -11,16 +12,17 @@ from xml.sax.saxutils import escape, quoteattr
 Point = Tuple[float, float]
 
 # layout, in SVG user units (pixels at 100 %)
-WIDTH, HEIGHT = 720, 420
-MARGIN_LEFT, MARGIN_RIGHT, MARGIN_TOP, MARGIN_BOTTOM = 70, 20, 40, 50
+WIDTH, HEIGHT = 720, 440
+MARGIN_LEFT, MARGIN_RIGHT, MARGIN_TOP, MARGIN_BOTTOM = 70, 20, 40, 70
 FONT_SIZE = 12
 TITLE_SIZE = 14
 TICK_LENGTH = 5
-LEGEND_ROW = 16              # height of one legend line
+LEGEND_GAP = 24              # between two legend entries, in the row under the x axis
 LEGEND_SWATCH = 18           # length of the legend's line sample
+CHAR_WIDTH = 0.6             # of the font size: a character's width, about
 MARKER_RADIUS = 3.5
 TARGET_TICKS = 6             # about this many ticks per axis
-PADDING = 0.05               # of the data's span, added on each side of an axis
+PADDING = 0.05               # of the data's span, added above and below the y axis's
 NICE_STEPS = (1.0, 2.0, 2.5, 5.0, 10.0)   # tick steps are these times a power of ten
 DASH = "6,4"
 MAX_DECIMALS = 6             # of a tick label
@@ -83,9 +85,9 @@ def _finite(points: Sequence[Point]) -> List[Point]:
     return [(x, y) for x, y in points if math.isfinite(x) and math.isfinite(y)]
 
 
-def _range(values: List[float]) -> Tuple[float, float]:
+def _range(values: List[float], padding: float) -> Tuple[float, float]:
     low, high = min(values), max(values)
-    pad = (high - low) * PADDING or max(abs(high) * PADDING, PADDING)
+    pad = (high - low) * padding or max(abs(high) * padding, padding)
     return low - pad, high + pad
 
 
@@ -97,8 +99,8 @@ class _Frame:
         ys = [y for s in chart.series for _, y in _finite(s.points)]
         if not xs or not ys:
             raise ValueError(f"chart '{chart.title}' has no finite point to draw")
-        self.x_ticks = nice_ticks(*_range(xs))
-        self.y_ticks = nice_ticks(*_range(ys))
+        self.x_ticks = nice_ticks(min(xs), max(xs))     # time starts at the left edge
+        self.y_ticks = nice_ticks(*_range(ys, PADDING))
         self.left, self.top = MARGIN_LEFT, MARGIN_TOP
         self.width = WIDTH - MARGIN_LEFT - MARGIN_RIGHT
         self.height = HEIGHT - MARGIN_TOP - MARGIN_BOTTOM
@@ -179,7 +181,8 @@ def render(chart: Chart) -> str:
                          _label(tick, y_step), anchor="end"))
     out.append(f'<rect x="{frame.left}" y="{frame.top}" width="{frame.width}" '
                f'height="{frame.height}" fill="none" stroke="black"/>')
-    out.append(_text(frame.left + frame.width / 2, HEIGHT - FONT_SIZE / 2, chart.x_label))
+    out.append(_text(frame.left + frame.width / 2, bottom + TICK_LENGTH + 2.5 * FONT_SIZE,
+                     chart.x_label))
     middle = frame.top + frame.height / 2
     out.append(_text(FONT_SIZE, middle, chart.y_label,
                      extra=f' transform="rotate(-90 {FONT_SIZE} {middle:.1f})"'))
@@ -197,32 +200,28 @@ def render(chart: Chart) -> str:
             out += [f'<circle cx="{frame.x(x):.1f}" cy="{frame.y(y):.1f}" r="{MARKER_RADIUS}" '
                     f'fill={quoteattr(series.colour)}/>' for x, y in _finite(series.points)]
     out.append("</g>")
-    out += _legend(chart, right)
+    out += _legend(chart, frame.left)
     out.append("</svg>")
     return "\n".join(out) + "\n"
 
 
-def _legend(chart: Chart, right: float) -> List[str]:
-    labelled = [s for s in chart.series if s.label]
-    if not labelled:
-        return []
-    width = LEGEND_SWATCH + 8 + FONT_SIZE * 0.6 * max(len(s.label) for s in labelled)
-    left, top = right - width - 8, MARGIN_TOP + 6
-    out = [f'<rect x="{left - 6:.1f}" y="{top - 4}" width="{width + 10:.1f}" '
-           f'height="{LEGEND_ROW * len(labelled) + 6}" fill="white" fill-opacity="0.85" '
-           'stroke="#999999"/>']
-    for row, series in enumerate(labelled):
-        y = top + LEGEND_ROW * row + LEGEND_ROW / 2
+def _legend(chart: Chart, left: float) -> List[str]:
+    """One row under the x axis's label: a sample of each labelled series and its label."""
+    out: List[str] = []
+    y = HEIGHT - FONT_SIZE
+    x = left
+    for series in (s for s in chart.series if s.label):
         if series.line:
             dash = f' stroke-dasharray="{DASH}"' if series.dashed else ""
-            out.append(f'<line x1="{left:.1f}" y1="{y:.1f}" x2="{left + LEGEND_SWATCH:.1f}" '
+            out.append(f'<line x1="{x:.1f}" y1="{y:.1f}" x2="{x + LEGEND_SWATCH:.1f}" '
                        f'y2="{y:.1f}" stroke={quoteattr(series.colour)} '
                        f'stroke-width="{series.width:g}"{dash}/>')
         if series.markers:
-            out.append(f'<circle cx="{left + LEGEND_SWATCH / 2:.1f}" cy="{y:.1f}" '
+            out.append(f'<circle cx="{x + LEGEND_SWATCH / 2:.1f}" cy="{y:.1f}" '
                        f'r="{MARKER_RADIUS}" fill={quoteattr(series.colour)}/>')
-        out.append(_text(left + LEGEND_SWATCH + 6, y + FONT_SIZE / 3, series.label,
+        out.append(_text(x + LEGEND_SWATCH + 6, y + FONT_SIZE / 3, series.label,
                          anchor="start"))
+        x += LEGEND_SWATCH + 6 + CHAR_WIDTH * FONT_SIZE * len(series.label) + LEGEND_GAP
     return out
 
 
