@@ -19,8 +19,9 @@ import rospy
 from tf import transformations
 
 from course_grader import course as course_file
+from course_grader.grader import scenario_spec
 from course_grader.probe_tools import (ProbeError, check, publishers_of, robot_description,
-                                       subscribers_of, wait_until)
+                                       subscribers_of, wait_for_simulated_time, wait_until)
 from course_grader.measures import (Rotation, inside, is_still, stop_time, thin,
                                     tilt_degrees, unwrap, yaw_of)
 
@@ -135,8 +136,7 @@ def drive(course, folder: str = "") -> Dict:
     publisher = rospy.Publisher("/cmd_vel", Twist, queue_size=1)
     wait_until(lambda: publisher.get_num_connections() > 0, limit, "a subscriber of /cmd_vel")
     start = truth.pose().position
-    # the path is the samples that arrive while driving, counted, not timed: this probe may
-    # have started before the launch set /use_sim_time, its clock then the wall's
+    # the path is the samples that arrive while driving
     first = len(recorder.copy())
     command = Twist()
     command.linear.x = spec["speed"]
@@ -318,9 +318,12 @@ def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     scenario, config_path = argv[0], argv[1]
     folder = argv[2] if len(argv) > 2 else ""
+    course = course_file.parse(config_path)
+    if not scenario_spec(course, scenario).display:  # a simulation: on its clock
+        wait_for_simulated_time(course.limits["startup"])
     rospy.init_node("course_grader_probe", anonymous=True, disable_signals=True)
     try:
-        answer = measure(scenario, course_file.parse(config_path), folder)
+        answer = measure(scenario, course, folder)
     except Exception as error:  # pylint: disable=broad-except
         traceback.print_exc()
         answer = {"error": f"{type(error).__name__}: {error}"}

@@ -27,6 +27,23 @@ def wait_until(condition: Callable, timeout: float, what: str):
     raise ProbeError(f"shut down while waiting for {what}")
 
 
+def wait_for_simulated_time(timeout: float) -> bool:
+    """Waits, before the probe becomes a node, until the master holds /use_sim_time (the
+    launch file's simulator sets it; a node started before reads the wall clock for good,
+    and a probe's "20 s of simulated time" would be wall time). False after ``timeout``:
+    the probe then runs on whichever clock the launch file chose."""
+    master = rosgraph.Master("/course_grader_probe_start")
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        try:
+            if master.hasParam("/use_sim_time"):
+                return True
+        except (OSError, rosgraph.MasterError):
+            pass  # the master not answering yet: look again
+        time.sleep(POLL)
+    return False
+
+
 def check(name: str, passed: bool, evidence: str) -> Dict:
     return {"name": name, "passed": bool(passed), "evidence": evidence}
 
