@@ -9,9 +9,7 @@ rb1_fault_fixtures.py."""
 import json
 import os
 import shutil
-import subprocess
 import sys
-import time
 import xml.etree.ElementTree as ET
 
 import pytest
@@ -19,9 +17,9 @@ import pytest
 import headless
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from rb1_fault_fixtures import copy_solution  # noqa: E402  (beside this file, not a package)
+from grading import grade  # noqa: E402  (beside this file, not a package)
+from rb1_fault_fixtures import copy_solution  # noqa: E402
 
-GRADE_TIMEOUT = 600       # s: the whole grading of one submission, bounded
 FULL_MARKS = 10.0         # the RB1 guide's points in all (course_grader/config/rb1.yaml)
 # rviz's screenshot of our RB1 in display.rviz's view: its dark grey body (rb1_body, 0.15
 # grey, shaded and seen through) covers about 55,000 pixels, the view's background
@@ -34,29 +32,13 @@ SVG = "{http://www.w3.org/2000/svg}"
 SLIDER_NODE = 'type="joint_state_publisher_gui"/>'
 
 
-def grade(ros_env, submission, out, *options):
-    started = time.monotonic()
-    done = subprocess.run(["rosrun", "course_grader", "grade", "rb1", submission, "--out", out,
-                           *options],
-                          env=ros_env, capture_output=True, text=True, timeout=GRADE_TIMEOUT,
-                          check=False)
-    seconds = time.monotonic() - started
-    with open(os.path.join(out, "grade.log"), "w", encoding="utf-8") as log:
-        log.write(done.stdout + done.stderr)
-    assert done.returncode == 0, done.stdout + done.stderr
-    with open(os.path.join(out, "report.json"), encoding="utf-8") as stream:
-        report = json.load(stream)
-    assert os.path.isfile(os.path.join(out, "report.md"))
-    return {item["id"]: item for item in report["items"]}, done.stdout, seconds
-
-
 @pytest.fixture(scope="module")
 def graded_solution(repo, tmp_path_factory):
     folder = tmp_path_factory.mktemp("grade_solution")
     submission = copy_solution(repo, str(folder / "submission"))
     results = os.path.join(repo, "test_results", "e2e", "course_grader", "solution")
     shutil.rmtree(results, ignore_errors=True)
-    return (submission,) + grade(os.environ.copy(), submission, results) + (results,)
+    return (submission,) + grade("rb1", submission, results) + (results,)
 
 
 def test_our_solution_gets_full_marks(graded_solution):
@@ -115,7 +97,7 @@ def test_a_required_slider_node_is_paused_not_stopped(repo, tmp_path):
         stream.write(text.replace(SLIDER_NODE, SLIDER_NODE[:-2] + ' required="true"/>'))
     out = os.path.join(repo, "test_results", "e2e", "course_grader", "required_sliders")
     shutil.rmtree(out, ignore_errors=True)
-    items, _, seconds = grade(os.environ.copy(), submission, out, "--only", "display")
+    items, _, seconds = grade("rb1", submission, out, "--only", "display")
     print(f"grading display with a required slider node took {seconds:.0f} s")
     assert set(items) == {"display_links_tf", "wheel_joints_move"}
     for item in items.values():

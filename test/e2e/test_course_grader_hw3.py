@@ -5,18 +5,15 @@ without a `paused` argument loses exactly 'ddrive.launch paused:=true starts pau
 service that answers SUCCESS without planning or moving (so it accepts a target in the
 floor) loses exactly the two step items, judged on the simulator's gripper point. The
 report plots the flips from the true orientation and says why it has no rviz screenshot."""
-import json
 import os
 import re
 import shutil
-import subprocess
-import time
 import xml.etree.ElementTree as ET
 
 import pytest
+from grading import grade
 
 HW3_PACKAGES = ("diff_drive", "arm_move")
-GRADE_TIMEOUT = 600       # s: the whole grading of one submission, bounded
 PAUSED_ARG = re.compile(r'\s*<arg name="paused" default=[^>]*/>\n')
 PAUSED_VALUE = '<arg name="paused" value="$(arg paused)"/>'
 # the line of arm_move's mover the step fixture answers before: success, nothing planned
@@ -35,27 +32,12 @@ def copy_solution(repo, folder):
     return folder
 
 
-def grade(submission, out, *options):
-    started = time.monotonic()
-    done = subprocess.run(["rosrun", "course_grader", "grade", "me495_hw3", submission,
-                           "--out", out, *options], env=os.environ.copy(), capture_output=True,
-                          text=True, timeout=GRADE_TIMEOUT, check=False)
-    seconds = time.monotonic() - started
-    os.makedirs(out, exist_ok=True)
-    with open(os.path.join(out, "grade.log"), "w", encoding="utf-8") as log:
-        log.write(done.stdout + done.stderr)
-    assert done.returncode == 0, done.stdout + done.stderr
-    with open(os.path.join(out, "report.json"), encoding="utf-8") as stream:
-        report = json.load(stream)
-    return {item["id"]: item for item in report["items"]}, done.stdout, seconds
-
-
 @pytest.fixture(scope="module")
 def graded_solution(repo, tmp_path_factory):
     submission = copy_solution(repo, str(tmp_path_factory.mktemp("hw3") / "submission"))
     results = os.path.join(repo, "test_results", "e2e", "course_grader_hw3", "solution")
     shutil.rmtree(results, ignore_errors=True)
-    return grade(submission, results) + (results,)
+    return grade("me495_hw3", submission, results) + (results,)
 
 
 def test_our_solution_gets_full_marks(graded_solution):
@@ -84,7 +66,7 @@ def test_a_launch_file_without_paused_loses_exactly_that_item(repo, tmp_path, gr
         stream.write(text)
     results = os.path.join(repo, "test_results", "e2e", "course_grader_hw3", "no_paused")
     shutil.rmtree(results, ignore_errors=True)
-    faulty, _, _ = grade(submission, results, "--only", "world")
+    faulty, _, _ = grade("me495_hw3", submission, results, "--only", "world")
     ours = graded_solution[0]
     assert set(faulty) == {"world_contents", "ddrive_paused"}
     lost = {i for i, item in faulty.items() if item["awarded"] < ours[i]["awarded"]}
@@ -104,7 +86,7 @@ def test_a_step_service_that_always_succeeds_loses_exactly_the_step_items(repo, 
         stream.writelines(lines)
     results = os.path.join(repo, "test_results", "e2e", "course_grader_hw3", "step_lies")
     shutil.rmtree(results, ignore_errors=True)
-    faulty, _, _ = grade(submission, results, "--only", "step")
+    faulty, _, _ = grade("me495_hw3", submission, results, "--only", "step")
     ours = graded_solution[0]
     assert set(faulty) == {"step_floor_error", "step_reachable"}
     lost = {i for i, item in faulty.items() if item["awarded"] < ours[i]["awarded"]}

@@ -7,40 +7,27 @@ the items it loses must be exactly the table's (our solution, the baseline, scor
 marks: test_course_grader.py), each with the figure measured. The C++ rotate service scores full marks; the submission that does
 not build scores 0 everywhere with its build error as the evidence; the hanging node is killed
 at the scenario limit and the scenario after it is graded as usual."""
-import json
 import os
 import shutil
-import subprocess
 import sys
-import time
 
 import pytest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
                                 "e2e"))
 import rb1_fault_fixtures as fixtures  # noqa: E402  (in test/e2e, not a package)
+from grading import grade  # noqa: E402
 
-GRADE_TIMEOUT = 600       # s: the whole grading of one submission, bounded
 RESULTS = ("test_results", "soak", "course_grader")
 
 
-def grade(submission, out, scenarios, scenario_limit=None):
+def grade_fixture(submission, out, scenarios, scenario_limit=None):
     shutil.rmtree(out, ignore_errors=True)
-    command = ["rosrun", "course_grader", "grade", "rb1", submission, "--out", out,
-               "--only", *scenarios]
+    options = ["--only", *scenarios]
     if scenario_limit is not None:
-        command += ["--scenario-limit", str(scenario_limit)]
-    started = time.monotonic()
-    done = subprocess.run(command, capture_output=True, text=True, timeout=GRADE_TIMEOUT,
-                          check=False)
-    seconds = time.monotonic() - started
-    os.makedirs(out, exist_ok=True)
-    with open(os.path.join(out, "grade.log"), "w", encoding="utf-8") as log:
-        log.write(done.stdout + done.stderr)
-    assert done.returncode == 0, done.stdout + done.stderr
-    with open(os.path.join(out, "report.json"), encoding="utf-8") as stream:
-        report = json.load(stream)
-    return {item["id"]: item for item in report["items"]}, seconds
+        options += ["--scenario-limit", str(scenario_limit)]
+    items, _, seconds = grade("rb1", submission, out, *options)
+    return items, seconds
 
 
 def lost(items):
@@ -57,7 +44,7 @@ def test_a_fault_loses_exactly_its_items(name, repo, tmp_path):
     fault = fixtures.FAULTS[name]
     submission = fixtures.make_fixture(repo, name, str(tmp_path / "submission"))
     out = os.path.join(repo, *RESULTS, f"fault_{name}")
-    items, seconds = grade(submission, out, fault.scenarios, fault.scenario_limit)
+    items, seconds = grade_fixture(submission, out, fault.scenarios, fault.scenario_limit)
     print(f"{name}: {fault.what}; graded --only {' '.join(fault.scenarios)} in {seconds:.0f} s")
     print(evidence(items))
     assert set(items) == {i for i in fixtures.ALL_ITEMS
