@@ -232,8 +232,9 @@ def test_without_the_kernel_numpy_casts_the_same_with_one_warning(hall, monkeypa
 
 
 # --- the warehouse's grazing beams ---------------------------------------------------------
-# The RB1's laser as it rests at the warehouse's start area (spawned at -5, 0 by
-# my_rb1_robot_warehouse.launch): 0.2475 m up, mounted upside down, the robot pitched
+# The RB1's laser as it rests at the start area of sim_bridge's warehouse.world (the RB1
+# spawned at -5, 0, where the RB1 launch file put it before it moved to the course's
+# warehouse): 0.2475 m up, mounted upside down, the robot pitched
 # 0.57 degrees onto a caster, so its beams sink 1 cm in 1 m and cross the racks' 4 cm
 # boards at grazing angles 8-12 m away.
 WAREHOUSE_LASER = (-4.748116, 0.0, 0.2474791)
