@@ -17,7 +17,7 @@ from tf import transformations
 
 from course_grader.hw3_measures import FlipCount, planar_travel, still_points
 from course_grader.measures import thin
-from course_grader.probe import PoseRecorder, Truth
+from course_grader.probe import Truth, pose_recorder
 from course_grader.probe_tools import ProbeError, check, wait_until
 from course_grader.ros_run import declared_args
 
@@ -91,7 +91,7 @@ def flip(course, scenario: str) -> Dict:
     truth = Truth(limit)
     _, joints = _joints_of("/robot_description", limit)
     model = truth.find_robot(joints)
-    recorder = PoseRecorder(model)
+    recorder = pose_recorder(model)
     wait_until(recorder.copy, limit, "/gazebo/model_states with the robot")
     began = recorder.copy()[0][0]
     end = began + spec["duration"]

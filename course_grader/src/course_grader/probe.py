@@ -75,14 +75,15 @@ def _movable_joints(timeout: float) -> List[str]:
     return [j.name for j in model.joints.values() if j.movable] or list(model.joints)
 
 
-class PoseRecorder:
-    """A model's true position and body up axis (z of its local z) from
-    /gazebo/model_states, against simulated time."""
+class ModelRecorder:
+    """Samples of one model's true pose from /gazebo/model_states, against simulated time:
+    each message gives ``sample(time, pose, the previous sample or None)``."""
 
-    def __init__(self, model: str):
+    def __init__(self, model: str, sample: Callable):
         from gazebo_msgs.msg import ModelStates
         self.model = model
-        self.samples: List[Tuple[float, float, float, float]] = []   # t, x, y, up_z
+        self.sample = sample
+        self.samples: List[Tuple] = []
         self.lock = threading.Lock()
         self.subscriber = rospy.Subscriber("/gazebo/model_states", ModelStates, self._on_states,
                                            queue_size=10)
@@ -91,14 +92,45 @@ class PoseRecorder:
         if self.model not in message.name:
             return
         pose = message.pose[message.name.index(self.model)]
-        q = pose.orientation
-        up_z = transformations.quaternion_matrix([q.x, q.y, q.z, q.w])[2, 2]
+        now = rospy.get_time()
         with self.lock:
-            self.samples.append((rospy.get_time(), pose.position.x, pose.position.y, up_z))
+            previous = self.samples[-1] if self.samples else None
+            self.samples.append(self.sample(now, pose, previous))
 
     def copy(self):
         with self.lock:
             return list(self.samples)
+
+    def since(self, start: float):
+        with self.lock:
+            return [s for s in self.samples if s[0] >= start]
+
+    def latest(self):
+        with self.lock:
+            return self.samples[-1] if self.samples else None
+
+
+def _position_and_up(now: float, pose, previous) -> Tuple[float, float, float, float]:
+    """(t, x, y, up_z): the body's up axis is the z of its local z."""
+    q = pose.orientation
+    up_z = transformations.quaternion_matrix([q.x, q.y, q.z, q.w])[2, 2]
+    return now, pose.position.x, pose.position.y, up_z
+
+
+def _unwrapped_yaw(now: float, pose, previous) -> Tuple[float, float]:
+    """(t, yaw) with yaw unwrapped against the previous sample's."""
+    q = pose.orientation
+    return now, unwrap(previous[1] if previous else None, yaw_of(q.x, q.y, q.z, q.w))
+
+
+def pose_recorder(model: str) -> ModelRecorder:
+    """A model's true position and body up axis, (t, x, y, up_z) samples."""
+    return ModelRecorder(model, _position_and_up)
+
+
+def yaw_recorder(model: str) -> ModelRecorder:
+    """The robot's true heading, unwrapped, (t, yaw) samples."""
+    return ModelRecorder(model, _unwrapped_yaw)
 
 
 # Every built-in probe takes the course and the folder where it may write pictures for the
@@ -131,7 +163,7 @@ def drive(course, folder: str = "") -> Dict:
     from geometry_msgs.msg import Twist
     spec, limit = course.checks["drive"], course.limits["startup"]
     truth = Truth(limit)
-    recorder = PoseRecorder(truth.find_robot(_movable_joints(limit)))
+    recorder = pose_recorder(truth.find_robot(_movable_joints(limit)))
     wait_until(recorder.copy, limit, "/gazebo/model_states with the robot")
     publisher = rospy.Publisher("/cmd_vel", Twist, queue_size=1)
     wait_until(lambda: publisher.get_num_connections() > 0, limit, "a subscriber of /cmd_vel")
@@ -182,41 +214,12 @@ def scan(course, folder: str = "") -> Dict:
         + (f", nearest {min(valid):.2f} m" if valid else ""))]}}
 
 
-class YawRecorder:
-    """The robot's true heading from /gazebo/model_states, unwrapped, against sim time."""
-
-    def __init__(self, model: str):
-        from gazebo_msgs.msg import ModelStates
-        self.model = model
-        self.samples = []
-        self.lock = threading.Lock()
-        self.subscriber = rospy.Subscriber("/gazebo/model_states", ModelStates, self._on_states,
-                                           queue_size=10)
-
-    def _on_states(self, message) -> None:
-        if self.model not in message.name:
-            return
-        q = message.pose[message.name.index(self.model)].orientation
-        now = rospy.get_time()
-        with self.lock:
-            previous = self.samples[-1][1] if self.samples else None
-            self.samples.append((now, unwrap(previous, yaw_of(q.x, q.y, q.z, q.w))))
-
-    def since(self, start: float):
-        with self.lock:
-            return [s for s in self.samples if s[0] >= start]
-
-    def latest(self):
-        with self.lock:
-            return self.samples[-1] if self.samples else None
-
-
 def rotate(course, folder: str = "") -> Dict:
     import rosservice
     spec, limit = course.checks["rotate"], course.limits["startup"]
     truth = Truth(limit)
     model = truth.find_robot(_movable_joints(limit))
-    recorder = YawRecorder(model)
+    recorder = yaw_recorder(model)
     wait_until(recorder.latest, limit, "/gazebo/model_states with the robot")
     rospy.wait_for_service("/rotate_robot", timeout=limit)
     node = rosservice.get_service_node("/rotate_robot")
