@@ -38,7 +38,8 @@ def graded_solution(repo, tmp_path_factory):
     submission = copy_solution(repo, str(folder / "submission"))
     results = os.path.join(repo, "test_results", "e2e", "course_grader", "solution")
     shutil.rmtree(results, ignore_errors=True)
-    return (submission,) + grade("rb1", submission, results) + (results,)
+    return (submission,) + grade("rb1", submission, results, "--scenario-jobs", "2") \
+        + (results,)
 
 
 def test_our_solution_gets_full_marks(graded_solution):

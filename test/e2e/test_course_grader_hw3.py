@@ -37,7 +37,7 @@ def graded_solution(repo, tmp_path_factory):
     submission = copy_solution(repo, str(tmp_path_factory.mktemp("hw3") / "submission"))
     results = os.path.join(repo, "test_results", "e2e", "course_grader_hw3", "solution")
     shutil.rmtree(results, ignore_errors=True)
-    return grade("me495_hw3", submission, results) + (results,)
+    return grade("me495_hw3", submission, results, "--scenario-jobs", "2") + (results,)
 
 
 def test_our_solution_gets_full_marks(graded_solution):

@@ -34,6 +34,9 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--scenario-limit", type=float, metavar="SECONDS",
                         help="wall-clock limit of one scenario, after which its processes are "
                              "killed and its items score 0 (default: the course's limits.scenario)")
+    parser.add_argument("--scenario-jobs", type=int, default=1, metavar="N",
+                        help="scenarios of one submission run at once, each in its own "
+                             "simulation (default: %(default)s)")
     parser.add_argument("--platform", default=grader.PLATFORM_SETUP,
                         help="setup.bash of the platform built alone (default: %(default)s)")
     parser.add_argument("--jobs", type=int,
@@ -56,6 +59,8 @@ def main(argv=None) -> int:
         course = course_file.load(args.course)
         if args.scenario_limit is not None:
             course.limits["scenario"] = args.scenario_limit
+        if args.scenario_jobs < 1:
+            raise course_file.CourseError(f"--scenario-jobs {args.scenario_jobs}: at least 1")
         unknown = sorted(set(args.only or []) - set(course.scenarios()))
         if unknown:
             raise course_file.CourseError(f"unknown scenario(s) {unknown}; the course has "
@@ -65,7 +70,7 @@ def main(argv=None) -> int:
             return batch.main(parser, args, course, out)
         result = grader.grade(course, args.path[0], out, args.platform,
                               progress=lambda line: print(f"grade: {line}", flush=True),
-                              scenarios=args.only)
+                              scenarios=args.only, scenario_jobs=args.scenario_jobs)
     except (course_file.CourseError, SubmissionError, batch.BatchError) as error:
         print(f"grade: {error}", file=sys.stderr)
         return 2

@@ -7,6 +7,7 @@ import importlib
 import os
 import tempfile
 import time
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from typing import Callable, Dict, List, Optional
 
@@ -223,14 +224,16 @@ def add_urdf_evidence(course: Course, results: List[ItemResult], description_dir
 
 def grade(course: Course, path: str, out: str, platform_setup: str = PLATFORM_SETUP,
           progress: Callable[[str], None] = lambda line: None,
-          scenarios: Optional[List[str]] = None) -> Report:
+          scenarios: Optional[List[str]] = None, scenario_jobs: int = 1) -> Report:
+    """Grades the submission at ``path`` into ``out``; ``scenario_jobs`` scenarios at once."""
     started = time.monotonic()
     with tempfile.TemporaryDirectory(prefix=f"grade_{course.name}_ws_") as workspace:
         return _grade_in(course, path, out, platform_setup, progress, scenarios, workspace,
-                         started)
+                         started, scenario_jobs)
 
 
-def _grade_in(course, path, out, platform_setup, progress, scenarios, workspace, started):
+def _grade_in(course, path, out, platform_setup, progress, scenarios, workspace, started,
+              scenario_jobs):
     """``grade`` with the submission's catkin workspace in ``workspace``: a temporary folder
     outside any source space (inside the repository, say under test_results/, the workspace's
     own build would find the copied my_rb1_* packages twice)."""
@@ -260,29 +263,31 @@ def _grade_in(course, path, out, platform_setup, progress, scenarios, workspace,
     foreign = submission.resolves_inside(env, list(staged.found), workspace)
     if foreign:
         report.notes += foreign
-    for scenario in wanted:
+
+    def run(scenario: str) -> List[ItemResult]:
         items = course.items_of(scenario)
         spec = scenario_spec(course, scenario)
-        if spec.runner:
-            progress(f"scenario {scenario}: {', '.join(i.id for i in items)}")
-            results = runner_results(course, scenario, RunnerContext(
-                env, workspace, staged, os.path.join(out, "logs", scenario)))
-            progress(f"scenario {scenario}: {sum(r.awarded for r in results):g} of "
-                     f"{sum(r.item.points for r in results):g} in {results[0].seconds:.0f} s")
-            report.results += results
-            continue
-        needed = {course.commands[key][0] for key in spec.commands}
-        absent = sorted(needed & set(staged.missing))
-        if absent:
-            report.results += [failed_item(item, f"the submission has no {', '.join(absent)}")
-                               for item in items]
-            continue
+        if not spec.runner:
+            needed = {course.commands[key][0] for key in spec.commands}
+            absent = sorted(needed & set(staged.missing))
+            if absent:
+                return [failed_item(item, f"the submission has no {', '.join(absent)}")
+                        for item in items]
         progress(f"scenario {scenario}: {', '.join(i.id for i in items)}")
-        results = scenario_results(course, scenario, env, os.path.join(out, "logs", scenario),
-                                   out)
+        log_dir = os.path.join(out, "logs", scenario)
+        if spec.runner:
+            results = runner_results(course, scenario,
+                                     RunnerContext(env, workspace, staged, log_dir))
+        else:
+            results = scenario_results(course, scenario, env, log_dir, out)
         progress(f"scenario {scenario}: {sum(r.awarded for r in results):g} of "
                  f"{sum(r.item.points for r in results):g} in {results[0].seconds:.0f} s")
-        report.results += results
+        return results
+
+    # each scenario has its own master, ports, logs and pictures: they may run side by side
+    with ThreadPoolExecutor(max_workers=max(1, scenario_jobs)) as pool:
+        for results in pool.map(run, wanted):
+            report.results += results
     if course.urdf:
         add_urdf_evidence(course, report.results, staged.found.get("my_rb1_description") and
                           os.path.join(workspace, "src", "my_rb1_description"))

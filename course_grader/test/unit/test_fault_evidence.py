@@ -120,6 +120,14 @@ def test_the_scenario_limit_is_a_command_line_option():
     assert cli.parse_args(["rb1", "PATH"]).scenario_limit is None
 
 
+def test_scenarios_at_once_is_an_option_of_at_least_one(capsys):
+    from course_grader import cli
+    assert cli.parse_args(["rb1", "PATH"]).scenario_jobs == 1
+    assert cli.parse_args(["rb1", "PATH", "--scenario-jobs", "2"]).scenario_jobs == 2
+    assert cli.main(["rb1", "PATH", "--scenario-jobs", "0"]) == 2
+    assert "--scenario-jobs 0: at least 1" in capsys.readouterr().err
+
+
 def test_a_node_in_its_own_session_ignoring_signals_is_killed_at_the_stop(tmp_path):
     """As roslaunch starts a node (setsid) that ignores SIGINT and SIGTERM: the launch's
     process group is gone after the stop, the node must be too."""
