@@ -57,6 +57,14 @@ DEFAULT_REPORT = {"screenshot": {"window": "RViz", "timeout": 30.0, "interval": 
 DEFAULT_HEADLESS_ARGS = {"gui": "false"}
 
 
+# The RB1 course's built-in scenarios (its file names none): which of the guide's commands
+# each scenario runs, in order
+SCENARIO_COMMANDS = {"display": ["display"], "spawn": ["warehouse"], "drive": ["warehouse"],
+                     "scan": ["warehouse"], "rotate": ["warehouse", "rotate"]}
+# a topic that shows a command's launch is up before the next command is typed
+READY_TOPIC = {"warehouse": "/odom"}
+
+
 @dataclass
 class Course:
     name: str
@@ -173,6 +181,16 @@ def _scenario_specs(data: Dict[str, Any]) -> Dict[str, ScenarioSpec]:
             probe=str(spec.get("probe", "")), runner=str(spec.get("runner", "")),
             display=bool(spec.get("display", False)))
     return specs
+
+
+def scenario_spec(course: Course, scenario: str) -> ScenarioSpec:
+    """How ``scenario`` runs: the course file's own, or the built-in RB1 scenarios."""
+    if course.scenario_specs:
+        return course.scenario_specs[scenario]
+    commands = SCENARIO_COMMANDS[scenario]
+    return ScenarioSpec(commands=tuple(commands),
+                        ready={k: t for k, t in READY_TOPIC.items() if k in commands},
+                        probe=scenario, display=scenario == "display")
 
 
 def _check_scenarios(course: Course, path: str) -> None:

@@ -12,20 +12,13 @@ from dataclasses import dataclass
 from typing import Callable, Dict, List, Optional
 
 from course_grader import plots, ros_run, screenshot, submission, urdf_checks
-from course_grader.course import Course, CourseError, ScenarioSpec
+from course_grader.course import Course, CourseError, ScenarioSpec, scenario_spec
 from course_grader.results import Check, Figure, ItemResult, Report, failed_item, judge
 from urdf_tools import UrdfError
 
 PACKAGE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 REPO = os.path.dirname(PACKAGE_DIR)
 PLATFORM_SETUP = os.path.join(REPO, ".ws", "platform", "devel", "setup.bash")
-
-# which of the guide's commands each scenario runs, in order
-SCENARIO_COMMANDS = {"display": ["display"], "spawn": ["warehouse"], "drive": ["warehouse"],
-                     "scan": ["warehouse"], "rotate": ["warehouse", "rotate"]}
-# a topic that shows a command's launch is up before the next command is typed
-READY_TOPIC = {"warehouse": "/odom"}
-
 
 def _launch_args(env: Dict[str, str], package: str, launch_file: str,
                  headless: Optional[Dict[str, str]] = None) -> List[str]:
@@ -36,16 +29,6 @@ def _launch_args(env: Dict[str, str], package: str, launch_file: str,
     declared = ros_run.declared_args(path)
     headless = {"gui": "false"} if headless is None else headless
     return [f"{name}:={value}" for name, value in headless.items() if name in declared]
-
-
-def scenario_spec(course: Course, scenario: str) -> ScenarioSpec:
-    """How ``scenario`` runs: the course file's own, or the built-in RB1 scenarios."""
-    if course.scenario_specs:
-        return course.scenario_specs[scenario]
-    commands = SCENARIO_COMMANDS[scenario]
-    return ScenarioSpec(commands=tuple(commands),
-                        ready={k: t for k, t in READY_TOPIC.items() if k in commands},
-                        probe=scenario, display=scenario == "display")
 
 
 def call_named(target: str, *args):

@@ -19,7 +19,7 @@ import rospy
 from tf import transformations
 
 from course_grader import course as course_file
-from course_grader.grader import scenario_spec
+from course_grader.course import scenario_spec
 from course_grader.probe_tools import (ProbeError, check, publishers_of, robot_description,
                                        subscribers_of, wait_for_simulated_time, wait_until)
 from course_grader.measures import (Rotation, inside, is_still, stop_time, thin,
@@ -309,8 +309,7 @@ SCENARIOS = {"display": display, "spawn": spawn, "drive": drive, "scan": scan,
 def measure(scenario: str, course, folder: str = "") -> Dict:
     """The scenario's probe: the course file's ``module:function`` when it names one,
     else the built-in RB1 probe of that name (given ``folder`` for its pictures)."""
-    spec = course.scenario_specs.get(scenario)
-    target = spec.probe if spec is not None else scenario
+    target = scenario_spec(course, scenario).probe
     if ":" not in target:
         return SCENARIOS[target](course, folder)
     module_name, _, function = target.partition(":")
