@@ -2,7 +2,11 @@
 ``_name:=value``, ``roslaunch`` with ``name:=value``), stop at once with one line naming the
 parameter, the value as given and what is expected; no traceback. roslaunch hands its
 arguments over as text unless they look like an int, a float with a dot or true/false, so
-``1e9``, ``nan`` and ``maybe`` reach the nodes as strings (node_params converts them)."""
+``1e9``, ``nan`` and ``maybe`` reach the nodes as strings (node_params converts them).
+
+The cases share one master (``shared_master``: each case's parameters are deleted after it);
+roslaunch, finding a master on its port, uses it instead of starting one, as it does for a
+user who runs roscore first."""
 import os
 import subprocess
 
@@ -30,14 +34,14 @@ def assert_named(output, *parts):
     ("speed", "-1.0", "~speed: -1.0 is not positive; expected the wheels' ground speed"),
     ("leg_time", "fast", "~leg_time: 'fast' is not a number; expected seconds > 0"),
 ])
-def test_flip_names_a_bad_setting(master, parameter, value, says):
-    result = rosrun(master, "diff_drive", "flip", f"_{parameter}:={value}")
+def test_flip_names_a_bad_setting(shared_master, parameter, value, says):
+    result = rosrun(shared_master, "diff_drive", "flip", f"_{parameter}:={value}")
     assert result.returncode == 2, result.stdout + result.stderr
     assert_named(result.stdout + result.stderr, says)
 
 
-def test_mover_names_a_bad_waypoint(master):
-    result = rosrun(master, "arm_move", "mover", "_waypoints:=[[0.1, 0.2]]")
+def test_mover_names_a_bad_waypoint(shared_master):
+    result = rosrun(shared_master, "arm_move", "mover", "_waypoints:=[[0.1, 0.2]]")
     assert result.returncode == 1, result.stdout + result.stderr
     assert_named(result.stdout + result.stderr, "~waypoints[0] must be [x, y, z, gripper_open]")
 
@@ -61,26 +65,27 @@ def test_mover_names_a_bad_waypoint(master):
     pytest.param("extra_gazebo_args:=--seed=x", "gzserver --seed: 'x' is not a whole number",
                  id="gzserver-seed-x"),
 ])
-def test_simulator_stops_naming_a_bad_launch_argument(ros_env, results_dir, argument, says):
+def test_simulator_stops_naming_a_bad_launch_argument(shared_master, results_dir, argument,
+                                                      says):
     """``roslaunch gazebo_ros empty_world.launch <argument>``: the simulator ends with one
     fatal line (roslaunch itself goes on, as the launch file does not require it)."""
     log = os.path.join(results_dir, "roslaunch.txt")
     arguments = ["gazebo_ros", "empty_world.launch", argument]
     if not argument.startswith("gui:="):
         arguments.append("gui:=false")
-    with headless.roslaunch(arguments, ros_env, log) as launch:
+    with headless.roslaunch(arguments, shared_master, log) as launch:
         headless.wait_until(lambda: "process has died" in launch.output()
                             or not launch.running(), LAUNCH_TIMEOUT, "the simulator to stop")
         output = launch.output()
     assert_named(output, f"sim_bridge cannot start: {says}", "exit code 1")
 
 
-def test_simulator_takes_a_huge_real_time_factor_as_fast_as_it_can(ros_env, results_dir):
+def test_simulator_takes_a_huge_real_time_factor_as_fast_as_it_can(shared_master, results_dir):
     """1e9 (text to roslaunch) is read as a number; the machine cannot keep up with it, so
     the simulator simply runs unpaced."""
     log = os.path.join(results_dir, "roslaunch.txt")
     with headless.roslaunch(["gazebo_ros", "empty_world.launch", "gui:=false",
-                             "real_time_factor:=1e9"], ros_env, log) as launch:
+                             "real_time_factor:=1e9"], shared_master, log) as launch:
         headless.wait_until(lambda: "sim_bridge ready" in launch.output()
                             or "process has died" in launch.output(),
                             LAUNCH_TIMEOUT, "the simulator to start")
@@ -93,11 +98,11 @@ def test_simulator_takes_a_huge_real_time_factor_as_fast_as_it_can(ros_env, resu
             "controllers' action servers at start-up (arm.launch's driver_timeout)"),
     ("0", "~action_timeout: 0 is not positive"),
 ])
-def test_arm_launch_stops_naming_a_bad_driver_timeout(ros_env, value, says):
+def test_arm_launch_stops_naming_a_bad_driver_timeout(shared_master, value, says):
     result = subprocess.run(
-        ["roslaunch", "-p", ros_env["ROS_MASTER_URI"].rsplit(":", 1)[1], "arm_move",
+        ["roslaunch", "-p", shared_master["ROS_MASTER_URI"].rsplit(":", 1)[1], "arm_move",
          "arm.launch", "use_sim:=false", "rviz:=false", f"driver_timeout:={value}"],
-        env=ros_env, capture_output=True, text=True, timeout=LAUNCH_TIMEOUT, check=False,
+        env=shared_master, capture_output=True, text=True, timeout=LAUNCH_TIMEOUT, check=False,
         stdin=subprocess.DEVNULL)
     assert_named(result.stdout + result.stderr, f"mover: {says}")
 
@@ -115,7 +120,7 @@ def test_arm_launch_stops_naming_a_bad_driver_timeout(ros_env, value, says):
     ("teleop_twist_keyboard", "teleop_twist_keyboard.py", "_repeat_rate:=0",
      "~repeat_rate: 0 is not positive; expected how often the command is republished"),
 ])
-def test_node_stops_naming_a_bad_parameter(master, package, node, argument, says):
-    result = rosrun(master, package, node, argument)
+def test_node_stops_naming_a_bad_parameter(shared_master, package, node, argument, says):
+    result = rosrun(shared_master, package, node, argument)
     assert result.returncode == 1, result.stdout + result.stderr
     assert_named(result.stdout + result.stderr, says)
