@@ -4,6 +4,8 @@ Tiers, in order (design.md, "Tests"):
   1. unit       pytest, no master:   <package>/test/unit/, test/unit/
   2. description pytest, no master:  <package>/test/description/, test/description/
   3. rostest    a real master each:  <package>/test/rostest/*.test and <package>/test/*.test
+                (two files at a time, each on its own free port, but for a few timing-bound
+                ones that run alone: ROSTEST_ALONE; --rostest-jobs 1: all one by one)
   4. e2e        as a user types it:  test/e2e/
   5. fuzz       pytest + Hypothesis: <package>/test/fuzz/ (generated and mutated descriptions;
                 bounded for make test, FUZZ_LONG=1 for a long run: make fuzz-long)
@@ -13,7 +15,7 @@ case is a test case whichever runner ran it. A rostest file that fails without a
 (a node that crashed, a launch error) counts as one failure. The exit status is non-zero
 when anything failed or errored.
 
-  python3 tools/run_tests.py [--tier NAME ...] [-k EXPRESSION]
+  python3 tools/run_tests.py [--tier NAME ...] [-k EXPRESSION] [--rostest-jobs N]
 """
 from __future__ import annotations
 
@@ -25,8 +27,9 @@ import subprocess
 import sys
 import time
 import xml.etree.ElementTree as ET
+from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import dataclass, field
-from typing import List
+from typing import List, Tuple
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RESULTS = os.path.join(REPO, "test_results")
@@ -34,6 +37,16 @@ TIERS = ("unit", "description", "rostest", "e2e", "fuzz")
 # The longest a single rostest file may take, launch and tear-down included; each
 # <test> has its own, shorter time-limit.
 ROSTEST_TIMEOUT = 600
+# rostest's own limit for a <test> without time-limit, s
+ROSTEST_DEFAULT_LIMIT = 60.0
+# rostest files run at once: each has its own master on a free port and its own ROS_HOME;
+# two keep the 2-core CI machine busy while one waits on start-up or a paced simulation
+ROSTEST_JOBS = 2
+# Files that run with nothing beside them: a controller closes its loop on a simulation
+# paced faster than real time, so a node starved of CPU for a moment costs it simulated
+# time. rotate.test (5x) failed beside another file once (-180 degrees overshot to -180.4,
+# then "no progress for 2 s"); flip_headings.test (2x, four flip nodes) says so itself.
+ROSTEST_ALONE = ("my_rb1_ros/rotate.test", "diff_drive/flip_headings.test")
 
 
 @dataclass
@@ -102,41 +115,70 @@ def run_pytest(tier: str, paths: List[str], keyword: str) -> Tally:
     return tally
 
 
-def run_rostests(keyword: str) -> Tally:
+def time_limit(test_file: str) -> float:
+    """The largest ``time-limit`` of the file's <test> elements (rostest's default when none)."""
+    try:
+        root = ET.parse(test_file).getroot()
+    except ET.ParseError:  # rostest reports it; run it early, it ends at once
+        return 0.0
+    return max((float(t.get("time-limit", ROSTEST_DEFAULT_LIMIT)) for t in root.iter("test")),
+               default=0.0)
+
+
+def run_rostest_file(package: str, test_file: str) -> Tuple[Tally, str]:
+    """One rostest file in its own ROS_HOME (rostest picks a free master port itself, so
+    files may run side by side); its tally and the lines to print for it."""
+    name = os.path.splitext(os.path.basename(test_file))[0]
+    ros_home = os.path.join(RESULTS, "rostest", package, name)
+    shutil.rmtree(ros_home, ignore_errors=True)
+    os.makedirs(ros_home)
+    env = dict(os.environ, ROS_HOME=ros_home)
+    started = time.monotonic()
+    log_path = os.path.join(ros_home, "rostest.log")
+    with open(log_path, "w", encoding="utf-8") as log:
+        try:
+            code = subprocess.run(["rostest", package, os.path.basename(test_file)],
+                                  env=env, stdout=log, stderr=subprocess.STDOUT,
+                                  timeout=ROSTEST_TIMEOUT, check=False).returncode
+        except subprocess.TimeoutExpired:
+            code = -1
+    results = glob.glob(os.path.join(ros_home, "test_results", "**", "rosunit-*.xml"),
+                        recursive=True)
+    file_tally = Tally()
+    for result in results:
+        file_tally.add(count_junit(result))
+    if code != 0 and file_tally.failed == 0:
+        file_tally.failed += 1
+        file_tally.failures.append(f"{package}/{name}.test: rostest exited {code}")
+    verdict = "ok" if code == 0 else f"FAILED (log {os.path.relpath(log_path, REPO)})"
+    return file_tally, (f"rostest {package} {name}.test: {file_tally.passed} passed, "
+                        f"{file_tally.failed} failed in {time.monotonic() - started:.0f} s: "
+                        f"{verdict}")
+
+
+def run_rostests(keyword: str, jobs: int) -> Tally:
+    """Every rostest file: those of ROSTEST_ALONE one by one, then the others ``jobs`` at a
+    time, the longest time-limits first (the longest file then runs beside the many short
+    ones instead of after them)."""
     tally = Tally()
     test_files = sorted((os.path.basename(package), test_file) for package in packages()
                         for pattern in (("rostest", "*.test"), ("*.test",))
                         for test_file in glob.glob(os.path.join(package, "test", *pattern)))
     if keyword:
         test_files = [(p, f) for p, f in test_files if keyword in os.path.basename(f)]
-    for package, test_file in test_files:
-        name = os.path.splitext(os.path.basename(test_file))[0]
-        ros_home = os.path.join(RESULTS, "rostest", package, name)
-        shutil.rmtree(ros_home, ignore_errors=True)
-        os.makedirs(ros_home)
-        env = dict(os.environ, ROS_HOME=ros_home)
-        print(f"rostest {package} {name}.test", flush=True)
-        started = time.monotonic()
-        log_path = os.path.join(ros_home, "rostest.log")
-        with open(log_path, "w", encoding="utf-8") as log:
-            try:
-                code = subprocess.run(["rostest", package, os.path.basename(test_file)],
-                                      env=env, stdout=log, stderr=subprocess.STDOUT,
-                                      timeout=ROSTEST_TIMEOUT, check=False).returncode
-            except subprocess.TimeoutExpired:
-                code = -1
-        results = glob.glob(os.path.join(ros_home, "test_results", "**", "rosunit-*.xml"),
-                            recursive=True)
-        file_tally = Tally()
-        for result in results:
-            file_tally.add(count_junit(result))
-        if code != 0 and file_tally.failed == 0:
-            file_tally.failed += 1
-            file_tally.failures.append(f"{package}/{name}.test: rostest exited {code}")
-        verdict = "ok" if code == 0 else f"FAILED (log {os.path.relpath(log_path, REPO)})"
-        print(f"  {file_tally.passed} passed, {file_tally.failed} failed in "
-              f"{time.monotonic() - started:.0f} s: {verdict}", flush=True)
+    test_files.sort(key=lambda entry: -time_limit(entry[1]))
+    alone = [(p, f) for p, f in test_files if f"{p}/{os.path.basename(f)}" in ROSTEST_ALONE]
+    for package, test_file in alone:
+        file_tally, line = run_rostest_file(package, test_file)
+        print(line, flush=True)
         tally.add(file_tally)
+    with ThreadPoolExecutor(max_workers=max(1, jobs)) as pool:
+        running = [pool.submit(run_rostest_file, package, test_file)
+                   for package, test_file in test_files if (package, test_file) not in alone]
+        for done in as_completed(running):
+            file_tally, line = done.result()
+            print(line, flush=True)
+            tally.add(file_tally)
     return tally
 
 
@@ -146,6 +188,8 @@ def main() -> int:
                         help="run only this tier (may be repeated)")
     parser.add_argument("-k", dest="keyword", default="",
                         help="pytest -k expression; for rostest, a part of the .test name")
+    parser.add_argument("--rostest-jobs", type=int, default=ROSTEST_JOBS, metavar="N",
+                        help=f"rostest files run at once (default {ROSTEST_JOBS})")
     args = parser.parse_args()
     tiers = args.tier or list(TIERS)
     os.makedirs(RESULTS, exist_ok=True)
@@ -164,7 +208,7 @@ def main() -> int:
             tally = run_pytest(tier, [os.path.join(p, "test", "description") for p in packages()]
                                + [os.path.join(REPO, "test", "description")], args.keyword)
         elif tier == "rostest":
-            tally = run_rostests(args.keyword)
+            tally = run_rostests(args.keyword, args.rostest_jobs)
         elif tier == "fuzz":
             tally = run_pytest(tier, [os.path.join(p, "test", "fuzz") for p in packages()],
                                args.keyword)
