@@ -81,6 +81,9 @@ class Course:
     scenario_specs: Dict[str, ScenarioSpec] = field(default_factory=dict)
     headless_args: Dict[str, str] = field(default_factory=lambda: dict(DEFAULT_HEADLESS_ARGS))
     report: Dict[str, Any] = field(default_factory=lambda: _report_settings({}))
+    # scenarios started first when several run at once (--scenario-jobs): the long ones, so
+    # that the short ones run beside them instead of after them
+    long_scenarios: List[str] = field(default_factory=list)
 
     @property
     def total_points(self) -> float:
@@ -96,6 +99,12 @@ class Course:
 
     def items_of(self, scenario: str) -> List[Item]:
         return [item for item in self.items if item.scenario == scenario]
+
+    def start_order(self, scenarios: List[str]) -> List[str]:
+        """``scenarios`` in the order to start them: ``long_scenarios`` first (in their
+        order), then the rest in the order given."""
+        long = [s for s in self.long_scenarios if s in scenarios]
+        return long + [s for s in scenarios if s not in long]
 
 
 def available() -> List[str]:
@@ -143,7 +152,8 @@ def parse(path: str) -> Course:
                         headless_args={str(k): str(v).lower() if isinstance(v, bool) else str(v)
                                        for k, v in data.get("headless_args",
                                                             DEFAULT_HEADLESS_ARGS).items()},
-                        report=_report_settings(data.get("report", {})))
+                        report=_report_settings(data.get("report", {})),
+                        long_scenarios=[str(s) for s in data.get("long_scenarios", [])])
     except (KeyError, TypeError, ValueError, IndexError) as error:
         raise CourseError(f"{path}: malformed course file ({type(error).__name__}: {error})") \
             from error
@@ -151,6 +161,10 @@ def parse(path: str) -> Course:
     if len(set(ids)) != len(ids):
         raise CourseError(f"{path}: item ids repeat: {ids}")
     _check_scenarios(course, path)
+    unknown = [s for s in course.long_scenarios if s not in course.scenarios()]
+    if unknown:
+        raise CourseError(f"{path}: long_scenarios names {unknown}, not scenarios of the "
+                          f"course's items ({', '.join(course.scenarios())})")
     return course
 
 

@@ -28,6 +28,22 @@ def test_rb1_items_and_points_are_the_guides(rb1):
     assert [i.task for i in rb1.items_of("rotate")] == [4, 4, 4]
 
 
+def test_long_scenarios_start_first_and_the_rest_keep_the_course_order(rb1):
+    assert rb1.start_order(rb1.scenarios()) == ["rotate", "display", "spawn", "drive", "scan"]
+    assert rb1.start_order(["spawn", "display"]) == ["spawn", "display"]   # --only, no rotate
+    hw3 = course_file.load("me495_hw3")
+    assert hw3.start_order(hw3.scenarios())[0] == "flip"
+
+
+def test_a_long_scenario_that_is_no_scenario_is_named(tmp_path):
+    with open(course_file.load("rb1").source, encoding="utf-8") as stream:
+        text = stream.read()
+    path = tmp_path / "rb1_typo.yaml"
+    path.write_text(text.replace("long_scenarios: [rotate]", "long_scenarios: [rotat]"))
+    with pytest.raises(course_file.CourseError, match=r"long_scenarios names \['rotat'\]"):
+        course_file.parse(str(path))
+
+
 def test_unknown_course_names_the_known_ones():
     with pytest.raises(course_file.CourseError, match="no course 'rb2'.*rb1"):
         course_file.load("rb2")
