@@ -4,11 +4,13 @@ with `--only`, on two copies with one fault each of the kinds students make: ddr
 without a `paused` argument loses exactly 'ddrive.launch paused:=true starts paused'; a step
 service that answers SUCCESS without planning or moving (so it accepts a target in the
 floor) loses exactly the two step items, judged on the simulator's gripper point. The
-report plots the flips from the true orientation and says why it has no rviz screenshot."""
+report plots the flips from the true orientation and says why it has no rviz screenshot.
+The three gradings run at once, as separate commands (a teaching assistant's terminals)."""
 import os
 import re
 import shutil
 import xml.etree.ElementTree as ET
+from concurrent.futures import ThreadPoolExecutor
 
 import pytest
 from grading import grade
@@ -32,12 +34,57 @@ def copy_solution(repo, folder):
     return folder
 
 
+def without_paused(submission):
+    """ddrive.launch without its ``paused`` argument (the simulator's given false)."""
+    launch = os.path.join(submission, "diff_drive", "launch", "ddrive.launch")
+    with open(launch, encoding="utf-8") as stream:
+        text = stream.read()
+    assert len(PAUSED_ARG.findall(text)) == 1 and PAUSED_VALUE in text, \
+        "the lines the fixture changes are no longer there"
+    text = PAUSED_ARG.sub("\n", text).replace(PAUSED_VALUE, '<arg name="paused" value="false"/>')
+    with open(launch, "w", encoding="utf-8") as stream:
+        stream.write(text)
+
+
+def step_lies(submission):
+    """The mover's step service answers SUCCESS before planning or moving."""
+    mover = os.path.join(submission, "arm_move", "src", "arm_move", "mover.py")
+    with open(mover, encoding="utf-8") as stream:
+        lines = stream.readlines()
+    assert lines.count(STEP_LINE) == 1, "the line the fixture changes is no longer there"
+    lines.insert(lines.index(STEP_LINE), STEP_LIE)
+    with open(mover, "w", encoding="utf-8") as stream:
+        stream.writelines(lines)
+
+
+# name: (results folder, the fault made in the copy or None, grade's options)
+GRADINGS = {"solution": ("solution", None, ("--scenario-jobs", "2")),
+            "no_paused": ("no_paused", without_paused, ("--only", "world")),
+            "step_lies": ("step_lies", step_lies, ("--only", "step"))}
+
+
 @pytest.fixture(scope="module")
-def graded_solution(repo, tmp_path_factory):
-    submission = copy_solution(repo, str(tmp_path_factory.mktemp("hw3") / "submission"))
-    results = os.path.join(repo, "test_results", "e2e", "course_grader_hw3", "solution")
-    shutil.rmtree(results, ignore_errors=True)
-    return grade("me495_hw3", submission, results, "--scenario-jobs", "2") + (results,)
+def gradings(repo, tmp_path_factory):
+    """The three gradings at once, each its own command with its own masters and folders (our
+    solution's flip scenario takes 25 s at real time, the faulty copies' scenarios 8 s each,
+    mostly waiting): name -> a future of (items by id, stdout, seconds, results folder). A
+    grading that fails fails the tests that use it."""
+    jobs = {}
+    for name, (folder, fault, options) in GRADINGS.items():
+        submission = copy_solution(repo, str(tmp_path_factory.mktemp("hw3") / name))
+        if fault is not None:
+            fault(submission)
+        results = os.path.join(repo, "test_results", "e2e", "course_grader_hw3", folder)
+        shutil.rmtree(results, ignore_errors=True)
+        jobs[name] = (submission, results, options)
+    with ThreadPoolExecutor(max_workers=len(jobs)) as pool:
+        yield {name: pool.submit(lambda s, r, o: grade("me495_hw3", s, r, *o) + (r,), *job)
+               for name, job in jobs.items()}
+
+
+@pytest.fixture(scope="module")
+def graded_solution(gradings):
+    return gradings["solution"].result()
 
 
 def test_our_solution_gets_full_marks(graded_solution):
@@ -54,19 +101,8 @@ def test_our_solution_gets_full_marks(graded_solution):
     assert "true gripper point" in items["step_reachable"]["evidence"]
 
 
-def test_a_launch_file_without_paused_loses_exactly_that_item(repo, tmp_path, graded_solution):
-    submission = copy_solution(repo, str(tmp_path / "submission"))
-    launch = os.path.join(submission, "diff_drive", "launch", "ddrive.launch")
-    with open(launch, encoding="utf-8") as stream:
-        text = stream.read()
-    assert len(PAUSED_ARG.findall(text)) == 1 and PAUSED_VALUE in text, \
-        "the lines the fixture changes are no longer there"
-    text = PAUSED_ARG.sub("\n", text).replace(PAUSED_VALUE, '<arg name="paused" value="false"/>')
-    with open(launch, "w", encoding="utf-8") as stream:
-        stream.write(text)
-    results = os.path.join(repo, "test_results", "e2e", "course_grader_hw3", "no_paused")
-    shutil.rmtree(results, ignore_errors=True)
-    faulty, _, _ = grade("me495_hw3", submission, results, "--only", "world")
+def test_a_launch_file_without_paused_loses_exactly_that_item(gradings, graded_solution):
+    faulty = gradings["no_paused"].result()[0]
     ours = graded_solution[0]
     assert set(faulty) == {"world_contents", "ddrive_paused"}
     lost = {i for i, item in faulty.items() if item["awarded"] < ours[i]["awarded"]}
@@ -74,19 +110,9 @@ def test_a_launch_file_without_paused_loses_exactly_that_item(repo, tmp_path, gr
     assert "does not declare an argument 'paused'" in faulty["ddrive_paused"]["evidence"]
 
 
-def test_a_step_service_that_always_succeeds_loses_exactly_the_step_items(repo, tmp_path,
+def test_a_step_service_that_always_succeeds_loses_exactly_the_step_items(gradings,
                                                                            graded_solution):
-    submission = copy_solution(repo, str(tmp_path / "submission"))
-    mover = os.path.join(submission, "arm_move", "src", "arm_move", "mover.py")
-    with open(mover, encoding="utf-8") as stream:
-        lines = stream.readlines()
-    assert lines.count(STEP_LINE) == 1, "the line the fixture changes is no longer there"
-    lines.insert(lines.index(STEP_LINE), STEP_LIE)
-    with open(mover, "w", encoding="utf-8") as stream:
-        stream.writelines(lines)
-    results = os.path.join(repo, "test_results", "e2e", "course_grader_hw3", "step_lies")
-    shutil.rmtree(results, ignore_errors=True)
-    faulty, _, _ = grade("me495_hw3", submission, results, "--only", "step")
+    faulty = gradings["step_lies"].result()[0]
     ours = graded_solution[0]
     assert set(faulty) == {"step_floor_error", "step_reachable"}
     lost = {i for i, item in faulty.items() if item["awarded"] < ours[i]["awarded"]}
