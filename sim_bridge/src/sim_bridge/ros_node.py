@@ -38,7 +38,6 @@ import numpy as np
 import pybullet as pb
 import rospy
 from geometry_msgs.msg import Pose, Twist
-from rosgraph_msgs.msg import Clock
 from std_srvs.srv import Empty, EmptyResponse
 from tf2_msgs.msg import TFMessage
 
@@ -46,7 +45,7 @@ from gazebo_msgs.msg import LinkStates, ModelStates
 from sim_bridge import one_simulator
 from sim_bridge.plugins.base import Bus, PluginError
 from sim_bridge.poses import quaternion_matrix
-from sim_bridge.ros_publishing import OwnClock, batch_queued_writes
+from sim_bridge.ros_publishing import ClockPublisher, batch_queued_writes
 from sim_bridge.sdf_world import SdfError, load_world, parse_model
 from sim_bridge.stop_signals import StopSignals
 from gazebo_msgs.srv import (ApplyBodyWrench, ApplyBodyWrenchResponse, ApplyJointEffort,
@@ -207,6 +206,9 @@ class RosBus(Bus):
     def send_transforms(self, transforms):
         self._tf.publish(TFMessage(transforms=list(transforms)))
 
+    def listened(self, publisher=None):
+        return (publisher or self._tf).get_num_connections() > 0
+
     def info(self, text):
         rospy.loginfo(text)
 
@@ -286,14 +288,13 @@ class SimBridgeNode:
         self._pace_anchor = None
         self.model_states = None
         self.link_states = None
-        self.own_clock: Optional[OwnClock] = None
+        self.clock: Optional[ClockPublisher] = None
         self._static_version = -1  # the world's scene_version the entries below are of
         self._static_entries: Dict[str, Tuple[Pose, Twist]] = {}
 
     # --- set-up -------------------------------------------------------------------------
     def advertise_clock(self) -> None:
-        self.own_clock = OwnClock()
-        self.clock = rospy.Publisher("/clock", Clock, queue_size=10)
+        self.clock = ClockPublisher()
 
     def advertise(self) -> None:
         self.advertise_clock()
@@ -523,9 +524,7 @@ class SimBridgeNode:
 
     # --- the loop -------------------------------------------------------------------------
     def _publish_clock(self) -> None:
-        now = rospy.Time(nsecs=self.world.now_ns)
-        self.own_clock.set(now)
-        self.clock.publish(Clock(clock=now))
+        self.clock.publish(self.world.now_ns)
 
     @staticmethod
     def _states_message(message_class, entries):

@@ -16,16 +16,26 @@ README's "Speed"):
 - With ``use_sim_time`` set, rospy subscribes every node to /clock, the simulator
   included: it received each of its own 250 messages a second to learn what it already
   knew. :class:`OwnClock` drops that subscription and sets rospy's time directly.
+- Building, then serialising, a ``Clock`` message and its ``rospy.Time`` 250 times a
+  simulated second cost more than writing it (about 13 µs a message against 9 for the
+  write, profiled at full speed). :class:`ClockPublisher` packs its 8 bytes itself and
+  hands them to the publisher's connections as rospy would (:func:`publish_serialized`).
 """
 from __future__ import annotations
 
 import socket
+import struct
 
 import rospy
 import rospy.impl.simtime
 import rospy.rostime
 import rospy.topics
+from rosgraph_msgs.msg import Clock
 from rospy.impl.tcpros_pubsub import QueuedConnection
+
+# A rosgraph_msgs/Clock on the wire: TCPROS's length prefix (8), then secs and nsecs
+CLOCK_WIRE = struct.Struct("<III")
+NS_PER_S = 1_000_000_000
 
 
 class BatchedConnection(QueuedConnection):
@@ -122,5 +132,63 @@ class OwnClock:
             rospy.impl.simtime._clock_sub = None
 
     def set(self, now: rospy.Time) -> None:
+        """rospy's ``_set_rostime`` without its checks, and waking the threads that wait for
+        simulated time (rospy.sleep, Rate, Timer) only when there are any: its lock and
+        notify cost about 3 us of the 13 a /clock message took. A thread that begins to
+        wait just after the check is woken by the next message, or by its own wait's
+        timeout, as with rospy's."""
         if self.simulated:
-            rospy.rostime._set_rostime(now)
+            rospy.rostime._rostime_current = now
+            condition = rospy.rostime._rostime_cond
+            if getattr(condition, "_waiters", True):  # CPython keeps them in a deque
+                with condition:
+                    condition.notify_all()
+
+
+def publish_serialized(publisher: rospy.Publisher, data: bytes) -> None:
+    """What rospy's ``Publisher.publish`` does once it has serialised a message, for ``data``
+    serialised already (TCPROS's length prefix included): under the publisher's lock, the
+    same bytes to every connection in order, its statistics counted, and a connection that
+    fails closed. For messages without a header (rospy numbers headers, not these)."""
+    impl = publisher.impl
+    if impl is None:
+        raise rospy.ROSException("publish() to an unregistered() handle")
+    broken = []
+    impl.acquire()
+    try:
+        if impl.closed:
+            if not rospy.is_shutdown():
+                raise rospy.ROSException("publish() to a closed topic")
+            return
+        impl.seq += 1
+        for connection in impl.connections:
+            try:
+                connection.write_data(data)
+            except Exception:  # rospy's: a connection that cannot be written is closed
+                broken.append(connection)
+        impl.message_data_sent += len(data)
+    finally:
+        impl.release()
+    for connection in broken:
+        try:
+            connection.close()
+        except Exception:  # rospy's: closing a broken connection may fail too
+            pass
+
+
+class ClockPublisher:
+    """/clock, published from the loop without a message object (see the module's notes),
+    and rospy's own time in this process set to match (:class:`OwnClock`)."""
+
+    def __init__(self, queue_size: int = 10):
+        self.own_clock = OwnClock()
+        self.publisher = rospy.Publisher("/clock", Clock, queue_size=queue_size)
+
+    def publish(self, now_ns: int) -> None:
+        secs, nsecs = divmod(now_ns, NS_PER_S)
+        self.own_clock.set(rospy.Time(secs, nsecs))
+        if self.publisher.impl is not None and self.publisher.impl.connections:
+            publish_serialized(self.publisher, CLOCK_WIRE.pack(8, secs, nsecs))
+
+    def unregister(self) -> None:
+        self.publisher.unregister()

@@ -24,6 +24,7 @@ class RecordingBus(Bus):
         self.params = params or {}
         self.services = {}
         self.actions = {}
+        self.unheard = set()  # topics nobody listens to ("/tf" included); all heard by default
 
     def publisher(self, topic, msg_class, queue_size=10, latch=False):
         return _Handle(self, topic)
@@ -42,6 +43,9 @@ class RecordingBus(Bus):
 
     def send_transforms(self, transforms):
         self.published.setdefault("/tf", []).extend(transforms)
+
+    def listened(self, publisher=None):
+        return (publisher.topic if publisher is not None else "/tf") not in self.unheard
 
     def info(self, text):
         pass

@@ -23,9 +23,15 @@ class Transport:
         self.done = False
         self.stat_bytes = self.stat_num_msg = 0
         self.thread_writes = 0
+        self.endpoint_id = "test_reader"
+
+    def fileno(self):  # rospy polls a topic's connections
+        return self.socket.fileno()
+
+    cleanup_cb = None
 
     def set_cleanup_callback(self, callback):
-        self.cleanup = callback
+        self.cleanup_cb = callback
 
     def write_data(self, data):
         self.thread_writes += 1
@@ -35,7 +41,7 @@ class Transport:
 
     def close(self):
         self.done = True
-        self.cleanup(self)
+        self.cleanup_cb(self)
 
 
 def frame(number, size):
@@ -110,3 +116,64 @@ def test_the_writer_thread_ends_when_the_connection_closes():
     queued._thread.join(timeout=5)
     reader.close()
     assert not queued._thread.is_alive()
+
+
+def test_the_packed_clock_is_rospys_serialisation_of_the_same_time():
+    import io
+
+    import rospy
+    from rosgraph_msgs.msg import Clock
+    from rospy.msg import serialize_message
+
+    from sim_bridge.ros_publishing import CLOCK_WIRE, NS_PER_S
+    for now_ns in (0, 1, NS_PER_S - 1, NS_PER_S, 123_456_789_012, (2 ** 32 - 1) * NS_PER_S):
+        buffer = io.BytesIO()
+        serialize_message(buffer, 1, Clock(clock=rospy.Time(nsecs=now_ns)))
+        assert CLOCK_WIRE.pack(8, *divmod(now_ns, NS_PER_S)) == buffer.getvalue(), now_ns
+
+
+def test_publish_serialized_writes_every_connection_in_order_and_drops_a_broken_one():
+    """rospy's real publisher implementation (no master needed to hold connections)."""
+    from rosgraph_msgs.msg import Clock
+    from rospy.topics import _PublisherImpl
+
+    from sim_bridge.ros_publishing import publish_serialized
+
+    class Handle:  # what rospy.Publisher is to publish_serialized: its impl
+        impl = _PublisherImpl("/clock_test", Clock)
+
+    class Broken:  # a connection whose peer went away: rospy's transports raise on write
+        endpoint_id = "gone"
+        closed = False
+        cleanup_cb = None
+        ends = socket.socketpair()  # rospy polls every connection's file descriptor
+
+        def fileno(self):
+            return self.ends[0].fileno()
+
+        def write_data(self, data):
+            raise OSError("broken pipe")
+
+        def set_cleanup_callback(self, callback):
+            self.cleanup_cb = callback
+
+        def close(self):  # as rospy's transports: closing calls the topic back
+            self.closed = True
+            self.cleanup_cb(self)
+
+    good, good_transport, good_reader = connection()
+    broken = Broken()
+    try:
+        Handle.impl.add_connection(broken)
+        Handle.impl.add_connection(good)
+        for number in range(5):
+            publish_serialized(Handle, frame(number, 12))
+        assert read_frames(good_reader, 0.5) == list(range(5))
+        assert Handle.impl.message_data_sent == 5 * 16
+        assert broken.closed and Handle.impl.connections == [good]
+    finally:
+        good_transport.close()
+        good_reader.close()
+        Handle.impl.close()
+        for end in Broken.ends:
+            end.close()

@@ -51,6 +51,27 @@ def test_driving_straight_matches_the_command(world, bus, diff_bot_xml):
     assert odometry.pose.pose.position.x == pytest.approx(end[0], abs=0.01)
 
 
+@pytest.mark.parametrize("source", ["world", "encoder"])
+def test_odometry_nobody_hears_is_not_built_and_encoders_still_count(world, bus, diff_bot_xml,
+                                                                      source):
+    """No /odom or /tf listener: no message; TF alone heard: the transform; and encoder
+    odometry integrated all along (its pose is the true one when someone listens again)."""
+    world.spawn_urdf("bot", diff_bot_xml(odometry_source=source), (0, 0, 0))
+    bus.unheard.update({"/odom", "/tf"})
+    command(bus, 0.2)
+    run(world, 2.0)
+    assert "/odom" not in bus.published and "/tf" not in bus.published
+    bus.unheard.discard("/tf")
+    run(world, 0.1)
+    transform = bus.last("/tf")
+    assert transform.child_frame_id == "base_footprint"
+    assert transform.transform.translation.x == pytest.approx(world.pose("bot")[0][0], abs=0.01)
+    bus.unheard.clear()
+    run(world, 0.1)
+    assert bus.last("/odom").pose.pose.position.x == \
+        pytest.approx(world.pose("bot")[0][0], abs=0.01)
+
+
 def test_encoder_odometry_keeps_the_sign_of_v(world, bus, diff_bot_xml):
     world.spawn_urdf("bot", diff_bot_xml(odometry_source="encoder"), (0, 0, 0))
     run(world, 0.5)

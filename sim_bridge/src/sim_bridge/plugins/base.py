@@ -34,6 +34,12 @@ class Bus:
     def send_transforms(self, transforms: Sequence[Any]) -> None:
         raise NotImplementedError
 
+    def listened(self, publisher=None) -> bool:
+        """Whether anyone would receive a message on ``publisher`` (one from this bus), or
+        on /tf when None. A plugin may skip building a message nobody would receive: what
+        nobody receives cannot differ. True unless the bus knows otherwise."""
+        return True
+
     def service(self, name: str, srv_class, handler: Callable[[Any], Any]):
         """Offers a service; ``handler`` runs in the physics thread. Returns a handle with
         ``shutdown()``."""
@@ -88,6 +94,9 @@ class TrackingBus(Bus):
 
     def send_transforms(self, transforms):
         self.bus.send_transforms(transforms)
+
+    def listened(self, publisher=None):
+        return self.bus.listened(publisher)
 
     def info(self, text):
         self.bus.info(text)

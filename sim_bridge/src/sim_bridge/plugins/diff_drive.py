@@ -85,11 +85,12 @@ class DiffDrive(DriveBase):
         if not self.rate.due(now_ns):
             return
         time = stamp(now_ns)
-        odometry = self._odometry(now_ns)
-        self.odom_out.publish(odometry)
         transforms = []
-        if self.publish_odom_tf:
-            transforms.append(self.odometry_transform(odometry))
+        if self.odometry_listened(self.publish_odom_tf):
+            odometry = self._odometry(now_ns)
+            self.odom_out.publish(odometry)
+            if self.publish_odom_tf:
+                transforms.append(self.odometry_transform(odometry))
         if self.publish_wheel_tf:
             transforms.extend(self._wheel_transforms(time))
         if transforms:

@@ -43,8 +43,17 @@ class DriveBase(Plugin):
                               "must be positive")
         return separation, radius
 
+    def odometry_listened(self, with_tf: bool) -> bool:
+        """Whether anyone receives the odometry or, when it is sent as TF, /tf: building
+        the message for nobody cost 26 us (a quarter of the simulator's fixed cost per
+        simulated second at a 1/240 s step, profiled)."""
+        bus = self.context.bus
+        return bus.listened(self.odom_out) or (with_tf and bus.listened())
+
     def publish_world_odometry(self, now_ns: int, covariance_matrix: list, with_tf: bool) -> None:
         """The true pose as odometry (Gazebo's "world" source), and as TF when asked."""
+        if not self.odometry_listened(with_tf):
+            return
         odometry = self.odometry_message(now_ns, *self.world_odometry(), covariance_matrix,
                                          covariance_matrix)
         self.odom_out.publish(odometry)

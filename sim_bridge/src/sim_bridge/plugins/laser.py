@@ -25,7 +25,7 @@ import pybullet as pb
 from sensor_msgs.msg import LaserScan
 
 from sim_bridge.plugins.base import Plugin, PluginError, Rate, stamp
-from sim_bridge.poses import pose6_to_position_quaternion, quaternion_matrix
+from sim_bridge.poses import pose6_to_position_quaternion
 
 # The most beams (horizontal x vertical samples) one sensor may cast. Real 2D scanners have
 # about 1000 (Hokuyo UTM-30LX 1081, SICK LMS1xx 1141), the courses' 720. Every beam is cast
@@ -110,7 +110,10 @@ class Laser(Plugin):
     def measure(self) -> np.ndarray:
         """One scan's ranges (metres; +inf where nothing is within range)."""
         position, orientation = self.sensor_pose()
-        world_directions = self.directions @ quaternion_matrix(orientation).T
+        # pybullet's matrix of the quaternion: the same as tf.transformations' (to the
+        # last bit or two), in 1 us instead of 5
+        rotation = np.array(pb.getMatrixFromQuaternion(orientation)).reshape(3, 3)
+        world_directions = self.directions @ rotation.T
         ranges = self.context.cast_rays(position, world_directions, self.range_min,
                                         self.range_max)
         hit = np.isfinite(ranges)
