@@ -11,6 +11,8 @@ a closed loop cannot see by itself:
   :class:`ClockWatch` and :class:`JumpDetector` name both, so the teleport is not counted
   as turning.
 - odometry stopping while time runs: :class:`OdometryWatch`.
+- a robot that is commanded but gets no closer to its goal (blocked, or turning the wrong
+  way): :class:`StallWatch`, in simulated time.
 
 A check that trips raises :class:`GuardTripped` or returns a text; either way the text is
 the cause, written for the service's answer.
@@ -159,3 +161,39 @@ class JumpDetector:
                     f"more than the robot can drive ({most_moved:.3f} m): a simulation "
                     f"reset, or the robot was moved")
         return None
+
+
+class StallWatch:
+    """Whether a commanded turn gets anywhere, in simulated time.
+
+    Progress is the remaining angle shrinking by ``step`` (rad) below where it stood when
+    progress was last counted; none for more than ``seconds`` is a stall. Progress is
+    measured towards the goal, not as motion: turning back after an overshoot is progress,
+    turning away is not. Within ``step`` of the goal, progress is reaching it: the rotation
+    then stops the robot to settle, and calls :meth:`restart` if it must turn again, so the
+    time the robot stood still on purpose never counts as stalling.
+    """
+
+    def __init__(self, step: float, seconds: float):
+        self.step, self.seconds = step, seconds
+        self._mark: Optional[float] = None  # rad left when progress was last counted
+        self._since = 0.0  # simulated s, when it was
+
+    def restart(self) -> None:
+        """The next :meth:`check` counts from where the robot stands then."""
+        self._mark = None
+
+    def check(self, remaining: float, now: float) -> Optional[str]:
+        """``None`` while the turn makes progress; the cause once it has made none for
+        longer than ``seconds``. ``remaining``: the angle still to turn (rad, either sign),
+        ``now``: simulated time (s)."""
+        remaining = abs(remaining)
+        if self._mark is None or remaining <= self._mark - self.step:
+            self._mark, self._since = remaining, now
+            return None
+        if now - self._since <= self.seconds:
+            return None
+        if remaining >= self._mark + self.step:
+            return ("the robot turns away from the goal (cmd_vel's or odometry's sign "
+                    "reversed?)")
+        return "the robot does not turn (blocked?)"

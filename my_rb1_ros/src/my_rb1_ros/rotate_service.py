@@ -31,7 +31,8 @@ from nav_msgs.msg import Odometry
 from tf.transformations import euler_from_quaternion
 
 from my_rb1_ros.guards import (ClockWatch, GuardTripped, JumpDetector, MotionLimits,
-                               OdometrySample, OdometryWatch, time_moved_backwards)
+                               OdometrySample, OdometryWatch, StallWatch,
+                               time_moved_backwards)
 from my_rb1_ros.rotation import RotationGains, YawAccumulator, angular_speed, time_allowed
 from my_rb1_ros.srv import Rotate, RotateResponse
 
@@ -58,8 +59,8 @@ class Config:
         5.0, positive, expected="wall seconds > 0 without odometry or moving time that fail")
     stall_seconds: float = parameter(
         2.0, positive, expected="seconds > 0 of commanded turning without progress that fail")
-    stall_degrees: float = parameter(2.0, positive,
-                                     expected="degrees > 0 of progress that count as turning")
+    stall_degrees: float = parameter(
+        2.0, positive, expected="degrees > 0 closer to the goal that count as progress")
     settle_speed: float = parameter(0.01, positive,
                                     expected="rad/s > 0 below which the robot is still")
     settle_seconds: float = parameter(
@@ -256,7 +257,7 @@ class RotateService:
         began = watch.check()
         deadline = began + time_allowed(math.radians(degrees), gains, config.time_margin,
                                         config.time_slack)
-        progress_yaw, progress_time = start, began
+        stall = StallWatch(math.radians(config.stall_degrees), config.stall_seconds)
         now = began
         while True:
             now = self._wait_until(watch, now, since)
@@ -270,10 +271,10 @@ class RotateService:
                     return (f"success: rotated {degrees} degrees (final error "
                             f"{abs(math.degrees(final_error)):.1f} degrees)")
                 now = self.sim_now()
+                stall.restart()  # standing still to settle was no stall: count from here
                 continue  # it drifted out while stopping: turn again
-            if abs(total - progress_yaw) >= math.radians(config.stall_degrees):
-                progress_yaw, progress_time = total, now
-            elif now - progress_time > config.stall_seconds:
+            stalled = stall.check(error, now)
+            if stalled is not None:
                 last_odometry = self.odometry.last_stamp
                 if last_odometry is not None and now - last_odometry > config.stall_seconds:
                     # no progress because nothing measures it: say so, not "blocked"
@@ -281,8 +282,8 @@ class RotateService:
                         f"no odometry on {self.odometry.topic} for {now - last_odometry:.1f} s "
                         f"while simulated time runs (odometry stopped)")
                 raise RotationFailed(
-                    f"the robot does not turn (blocked?): {math.degrees(total - start):.1f} of "
-                    f"{degrees} degrees done, no progress for {config.stall_seconds:g} s")
+                    f"{stalled}: {math.degrees(total - start):.1f} of {degrees} degrees done, "
+                    f"no progress for {config.stall_seconds:g} s")
             if now > deadline:
                 raise RotationFailed(f"timed out after {now - began:.1f} s with "
                                      f"{math.degrees(error):.1f} degrees to go")

@@ -1,11 +1,11 @@
 """my_rb1_ros.guards: odometry jumps, simulated time standing still or going back, odometry
-falling silent; no master."""
+falling silent, a commanded turn making no progress; no master."""
 import math
 
 import pytest
 
 from my_rb1_ros.guards import (MISSED_PERIODS, ClockWatch, GuardTripped, JumpDetector,
-                               MotionLimits, OdometrySample, OdometryWatch)
+                               MotionLimits, OdometrySample, OdometryWatch, StallWatch)
 
 LIMITS = MotionLimits(angular_speed=1.6, linear_speed=1.0, angle_margin=math.radians(5.0),
                       distance_margin=0.05)
@@ -120,3 +120,45 @@ def test_odometry_never_received_is_named_after_the_timeout_of_the_wait():
     watch = OdometryWatch(TIMEOUT, "/odom")
     assert watch.check(104.0, sim_now=3.0, waiting_since=100.0) is None
     assert "none received" in watch.check(105.5, sim_now=3.0, waiting_since=100.0)
+
+
+STALL_STEP = math.radians(2.0)  # rad closer to the goal that count as progress
+STALL_SECONDS = 2.0  # simulated s without progress that are a stall
+
+
+def test_a_turn_that_never_gets_closer_stalls_after_the_limit_as_blocked():
+    watch = StallWatch(STALL_STEP, STALL_SECONDS)
+    remaining = math.radians(90.0)
+    assert watch.check(remaining, 10.0) is None
+    # creeping: less than a step closer is not progress
+    assert watch.check(remaining - 0.9 * STALL_STEP, 10.0 + STALL_SECONDS) is None
+    assert watch.check(remaining - 0.9 * STALL_STEP, 10.0 + STALL_SECONDS + PERIOD) == \
+        "the robot does not turn (blocked?)"
+
+
+def test_each_step_closer_counts_from_then():
+    watch = StallWatch(STALL_STEP, STALL_SECONDS)
+    assert watch.check(math.radians(90.0), 10.0) is None
+    assert watch.check(math.radians(88.0), 11.5) is None
+    assert watch.check(math.radians(88.0), 11.5 + STALL_SECONDS) is None
+    assert watch.check(math.radians(88.0), 11.5 + STALL_SECONDS + PERIOD) is not None
+
+
+def test_after_a_restart_settling_at_the_goal_does_not_count():
+    watch = StallWatch(STALL_STEP, STALL_SECONDS)
+    assert watch.check(math.radians(1.5), 10.0) is None  # last counted 1.5 degrees short
+    # stopped, it settled 0.4 degrees past the goal: counted from 10.0 s, a stall at once
+    assert watch.check(math.radians(-0.4), 13.0) is not None
+    watch.restart()  # what the rotation does before it turns back
+    assert watch.check(math.radians(-0.4), 13.0) is None
+    assert watch.check(math.radians(-0.4), 13.0 + STALL_SECONDS) is None
+    assert watch.check(math.radians(-0.4), 13.0 + STALL_SECONDS + PERIOD) == \
+        "the robot does not turn (blocked?)"
+
+
+def test_turning_away_from_the_goal_is_no_progress_and_named():
+    watch = StallWatch(STALL_STEP, STALL_SECONDS)
+    assert watch.check(math.radians(90.0), 10.0) is None
+    assert watch.check(math.radians(110.0), 10.0 + STALL_SECONDS) is None
+    assert "turns away from the goal" in watch.check(math.radians(110.0),
+                                                     10.0 + STALL_SECONDS + PERIOD)
