@@ -26,6 +26,7 @@ import sys
 import time
 from typing import List, Optional
 
+import rosgraph
 import rospy
 from geometry_msgs.msg import Pose
 from std_msgs.msg import String
@@ -46,6 +47,10 @@ DATABASE_TEMPLATE = """<sdf version="1.4">
 </sdf>"""
 # How often a waiting loop looks again (wall seconds).
 POLL_PERIOD = 0.1
+# How often the spawn service is looked up while the simulator starts (wall seconds): a
+# lookup is one call to the master; rospy's wait_for_service looks every 0.3 s, which was
+# most of the time from a launch's start to its robot's first scan.
+SERVICE_POLL_PERIOD = 0.02
 
 
 class SpawnError(Exception):
@@ -78,8 +83,9 @@ def parse_arguments(argv: List[str]) -> argparse.Namespace:
     return parser.parse_args(argv)
 
 
-def _wait(condition, what: str, timeout: float):
-    """``condition()``'s first true value, polled until ``timeout`` wall seconds pass."""
+def _wait(condition, what: str, timeout: float, period: float = POLL_PERIOD):
+    """``condition()``'s first true value, polled every ``period`` until ``timeout`` wall
+    seconds pass."""
     deadline = time.monotonic() + timeout
     while not rospy.is_shutdown():
         value = condition()
@@ -87,8 +93,18 @@ def _wait(condition, what: str, timeout: float):
             return value
         if time.monotonic() > deadline:
             raise SpawnError(f"{what} (waited {timeout:g} s)")
-        time.sleep(POLL_PERIOD)
+        time.sleep(period)
     raise SpawnError("shut down while waiting")
+
+
+def service_registered(service: str) -> bool:
+    """Whether the master knows ``service``: a rospy or roscpp service registers once it
+    takes connections."""
+    try:
+        rosgraph.Master(rospy.get_name()).lookupService(rospy.resolve_name(service))
+        return True
+    except (rosgraph.MasterError, OSError):  # not registered yet; the master unreachable
+        return False
 
 
 def read_description(args: argparse.Namespace) -> str:
@@ -149,8 +165,8 @@ def spawn(args: argparse.Namespace) -> None:
         xml = package_to_model(xml)
     service = f"{namespace}/spawn_{'urdf' if args.urdf else 'sdf'}_model"
     try:
-        rospy.wait_for_service(service, timeout=args.timeout)
-    except rospy.ROSException:
+        _wait(lambda: service_registered(service), "", args.timeout, SERVICE_POLL_PERIOD)
+    except SpawnError:
         raise SpawnError(f"service {service} not available after {args.timeout:g} s; is the "
                          "simulator (gazebo_ros's empty_world.launch) running?") from None
     if args.wait:

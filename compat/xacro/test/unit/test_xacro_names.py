@@ -35,3 +35,25 @@ def test_a_missing_file_is_named(tmp_path):
     result = subprocess.run([f"{package_path()}/xacro", missing], capture_output=True,
                             text=True, timeout=60, check=False)
     assert result.returncode != 0 and "nothere.xacro" in result.stderr
+
+
+CHECK_LIGHT_ROSLAUNCH = """
+import importlib.machinery, sys
+command = importlib.machinery.SourceFileLoader("xacro_command", sys.argv[1]).load_module()
+command._light_roslaunch()
+from roslaunch import substitution_args
+print("light", "roslaunch.launch" not in sys.modules, substitution_args.__name__)
+import roslaunch
+print("whole", callable(roslaunch.main), "roslaunch.launch" in sys.modules)
+"""
+
+
+def test_xacro_loads_only_roslaunchs_substitution_args_and_the_rest_on_demand():
+    """The command skips roslaunch's __init__ (170 ms of every launch's robot_description)
+    until something asks for more than substitution_args; then roslaunch is whole."""
+    result = subprocess.run(["python3", "-c", CHECK_LIGHT_ROSLAUNCH,
+                             f"{package_path()}/xacro"],
+                            capture_output=True, text=True, timeout=60, check=False)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.split("\n")[:2] == ["light True roslaunch.substitution_args",
+                                              "whole True True"]
