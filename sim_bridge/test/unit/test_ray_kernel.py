@@ -299,3 +299,19 @@ def test_warehouse_grazing_beams_agree_with_exact_arithmetic(kernel):
         assert (fast[beam] == truth == math.inf) or abs(fast[beam] - truth) < 1e-6, \
             f"beam {beam}: ours {fast[beam]}, exact {truth}, pybullet {bullet[beam]}"
     world.close()
+
+
+def test_frames_from_poses_are_tfs_transforms():
+    from tf.transformations import quaternion_matrix, translation_matrix
+
+    from sim_bridge.ray_scene import frames_from_poses
+    rng = np.random.default_rng(7)
+    quaternions = rng.normal(size=(20, 4))
+    quaternions /= np.linalg.norm(quaternions, axis=1, keepdims=True)
+    positions = rng.uniform(-50, 50, size=(20, 3))
+    frames = frames_from_poses(positions, quaternions)
+    expected = [translation_matrix(p) @ quaternion_matrix(q)
+                for p, q in zip(positions, quaternions)]
+    assert frames.shape == (20, 4, 4)
+    assert np.abs(frames - np.array(expected)).max() < 1e-12
+    assert frames_from_poses([], []).shape == (0, 4, 4)
