@@ -47,7 +47,7 @@ from sim_bridge.plugins.base import Bus, PluginError
 from sim_bridge.poses import quaternion_matrix
 from sim_bridge.ros_publishing import ClockPublisher, batch_queued_writes
 from sim_bridge.sdf_world import SdfError, load_world, parse_model
-from sim_bridge.stop_signals import StopSignals
+from sim_bridge.stop_signals import StopSignals, shut_rospy_down
 from gazebo_msgs.srv import (ApplyBodyWrench, ApplyBodyWrenchResponse, ApplyJointEffort,
                             ApplyJointEffortResponse, BodyRequest, BodyRequestResponse,
                             DeleteModel, DeleteModelResponse, GetLinkState,
@@ -656,5 +656,5 @@ def main(overrides: Optional[Dict[str, Any]] = None, log_level: int = rospy.INFO
         node.run(stop)
     finally:
         physics.close()
-        rospy.signal_shutdown(stop.reason or "the simulator stopped")
+        shut_rospy_down(stop.reason or "the simulator stopped")
         world.close()

@@ -9,8 +9,9 @@ the same handler, which does nothing once a shutdown has begun, so only SIGKILL 
 
 So such a node starts rospy with ``disable_signals=True`` and installs :class:`StopSignals`:
 the handler only records the request, and the main loop, between two pieces of work,
-sees it and shuts rospy down from a clean point. A second signal while that shutdown
-is under way ends the process at once, as a user pressing Ctrl-C twice expects.
+sees it and shuts rospy down from a clean point (:func:`shut_rospy_down`). A second signal
+while that shutdown is under way ends the process at once, as a user pressing Ctrl-C twice
+expects.
 """
 from __future__ import annotations
 
@@ -18,6 +19,10 @@ import os
 import signal
 import sys
 from typing import Optional
+
+import rospy
+import rospy.core
+from rospy.impl.registration import RegManager, get_registration_listeners
 
 # what the process exits with when a second signal cuts its shutdown short
 FORCED_EXIT_STATUS = 1
@@ -44,3 +49,20 @@ class StopSignals:
             print(f"{name} again while stopping: exiting now", file=sys.stderr)
             os._exit(FORCED_EXIT_STATUS)
         self.reason = name
+
+
+def shut_rospy_down(reason: str) -> None:
+    """``rospy.signal_shutdown(reason)``, without waiting out rospy's registration thread:
+    that thread waits on its condition 0.5 s at a time and looks for the shutdown only
+    then, and signal_shutdown joins it, so every stop of the simulator took 0.6-0.7 s
+    (measured with py-spy dumps every 50 ms). A shutdown hook, run once the shutdown flag
+    is up, wakes it instead; it sees the flag and ends."""
+    managers = [listener for listener in get_registration_listeners().listeners
+                if isinstance(listener, RegManager)]
+
+    def wake(_reason):
+        for manager in managers:
+            with manager.cond:
+                manager.cond.notify_all()
+    rospy.core.add_shutdown_hook(wake)
+    rospy.signal_shutdown(reason)

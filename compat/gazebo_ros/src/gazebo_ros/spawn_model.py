@@ -35,7 +35,7 @@ from tf.transformations import quaternion_from_euler
 
 from gazebo_msgs.srv import (DeleteModel, GetWorldProperties, SetModelConfiguration,
                              SpawnModel)
-from sim_bridge.stop_signals import StopSignals
+from sim_bridge.stop_signals import StopSignals, shut_rospy_down
 
 # What -database spawns: the model of that name from the model path, as upstream.
 DATABASE_TEMPLATE = """<sdf version="1.4">
@@ -200,7 +200,7 @@ def stay_then_delete(args: argparse.Namespace, stop: StopSignals) -> None:
                            DeleteModel)(args.model)
     except (rospy.ServiceException, rospy.ROSException) as error:
         print(f"spawn_model: could not delete '{args.model}': {error}", file=sys.stderr)
-    rospy.signal_shutdown("spawn_model -b: stopped, model deleted")
+    shut_rospy_down("spawn_model -b: stopped, model deleted")
 
 
 def main(argv: Optional[List[str]] = None) -> int:
