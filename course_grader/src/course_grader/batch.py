@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import csv
 import json
+import math
 import os
 import shutil
 import signal
@@ -231,8 +232,8 @@ class Runner:
                  progress: Callable[[str], None] = lambda line: None):
         if jobs < 1:
             raise BatchError(f"--jobs {jobs}: at least 1")
-        if limit <= 0:
-            raise BatchError(f"--limit {limit:g}: must be more than 0 s")
+        if not (math.isfinite(limit) and limit > 0):   # NaN compares false with anything
+            raise BatchError(f"--limit {limit:g}: must be a positive number of seconds")
         self.jobs, self.limit, self.stop_timeout = jobs, limit, stop_timeout
         self.progress = progress
         self.tag = f"{os.getpid()}-{time.time_ns()}"   # this batch's markers differ from another's

@@ -7,12 +7,36 @@ child process each, and writes one CSV of scores (course_grader.batch)."""
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 import tempfile
 
 from course_grader import course as course_file
 from course_grader import batch, grader, report
 from course_grader.submission import SubmissionError
+
+
+def positive_seconds(text: str) -> float:
+    """An argparse type: a finite number of seconds above 0 (0, a negative number, NaN or
+    infinity would make every limit fire at once or never)."""
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and value > 0):
+        raise argparse.ArgumentTypeError(f"must be a positive number of seconds, got {text}")
+    return value
+
+
+def positive_count(text: str) -> int:
+    """An argparse type: a whole number of at least 1."""
+    try:
+        value = int(text)
+    except ValueError:
+        value = 0
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be a whole number of at least 1, got {text}")
+    return value
 
 
 def parse_args(argv):
@@ -31,22 +55,22 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--only", nargs="+", metavar="SCENARIO",
                         help="run only these scenarios (their items alone are graded); "
                              f"each course's: {course_file.scenario_summary()}")
-    parser.add_argument("--scenario-limit", type=float, metavar="SECONDS",
+    parser.add_argument("--scenario-limit", type=positive_seconds, metavar="SECONDS",
                         help="wall-clock limit of one scenario, after which its processes are "
                              "killed and its items score 0 (default: the course's limits.scenario)")
-    parser.add_argument("--scenario-jobs", type=int, default=1, metavar="N",
+    parser.add_argument("--scenario-jobs", type=positive_count, default=1, metavar="N",
                         help="scenarios of one submission run at once, each in its own "
                              "simulation (default: %(default)s)")
     parser.add_argument("--platform", default=grader.PLATFORM_SETUP,
                         help="setup.bash of the platform built alone (default: %(default)s)")
-    parser.add_argument("--jobs", type=int,
+    parser.add_argument("--jobs", type=positive_count,
                         help="submissions graded at once (default: the number of cores)")
     parser.add_argument("--shard", metavar="I/N",
                         help="grade only shard I of N (1-based) of the sorted paths: "
                              "every N-th from the I-th")
     parser.add_argument("--csv", metavar="FILE",
                         help="the scores, one row per submission (default: OUT/scores.csv)")
-    parser.add_argument("--limit", type=float, metavar="SECONDS",
+    parser.add_argument("--limit", type=positive_seconds, metavar="SECONDS",
                         help="wall-clock limit per submission, after which it is killed "
                              "(default: from the course's limits)")
     return parser
@@ -59,8 +83,6 @@ def main(argv=None) -> int:
         course = course_file.load(args.course)
         if args.scenario_limit is not None:
             course.limits["scenario"] = args.scenario_limit
-        if args.scenario_jobs < 1:
-            raise course_file.CourseError(f"--scenario-jobs {args.scenario_jobs}: at least 1")
         unknown = sorted(set(args.only or []) - set(course.scenarios()))
         if unknown:
             raise course_file.CourseError(f"unknown scenario(s) {unknown}; the course has "

@@ -124,8 +124,10 @@ def test_scenarios_at_once_is_an_option_of_at_least_one(capsys):
     from course_grader import cli
     assert cli.parse_args(["rb1", "PATH"]).scenario_jobs == 1
     assert cli.parse_args(["rb1", "PATH", "--scenario-jobs", "2"]).scenario_jobs == 2
-    assert cli.main(["rb1", "PATH", "--scenario-jobs", "0"]) == 2
-    assert "--scenario-jobs 0: at least 1" in capsys.readouterr().err
+    with pytest.raises(SystemExit) as refused:
+        cli.main(["rb1", "PATH", "--scenario-jobs", "0"])
+    assert refused.value.code == 2
+    assert "--scenario-jobs: must be a whole number of at least 1, got 0" in capsys.readouterr().err
 
 
 def test_a_node_in_its_own_session_ignoring_signals_is_killed_at_the_stop(tmp_path):
