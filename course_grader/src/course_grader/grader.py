@@ -51,8 +51,9 @@ def scenario_results(course: Course, scenario: str, env: Dict[str, str],
     started = time.monotonic()
     limit = course.limits["scenario"]
     names = []
+    session = ros_run.Session(env, log_dir, course.limits)
     try:
-        with ros_run.Session(env, log_dir, course.limits) as session:
+        with session:
             session.start_master()
             if spec.display:
                 session.start_display()
@@ -74,17 +75,26 @@ def scenario_results(course: Course, scenario: str, env: Dict[str, str],
     except ros_run.RunError as error:
         trouble = _trouble_after(log_dir, names)
         seconds = time.monotonic() - started
-        return _not_pictured(spec, [failed_item(item, str(error), trouble, seconds)
-                                    for item in items], str(error))
+        return _with_killed(session, _not_pictured(spec, [
+            failed_item(item, str(error), trouble, seconds) for item in items], str(error)))
     seconds = time.monotonic() - started
     if "error" in answer:
-        return _not_pictured(spec, [failed_item(item, answer["error"], trouble, seconds)
-                                    for item in items], answer["error"])
+        return _with_killed(session, _not_pictured(spec, [
+            failed_item(item, answer["error"], trouble, seconds) for item in items],
+            answer["error"]))
     checks, notes = answer.get("checks", {}), answer.get("notes", {})
     results = [judge(item, [Check.from_dict(c) for c in checks.get(item.id, [])],
                      notes.get(item.id, []), trouble, seconds) for item in items]
     if out:
         add_figures(results, answer, out)
+    return _with_killed(session, results)
+
+
+def _with_killed(session: ros_run.Session, results: List[ItemResult]) -> List[ItemResult]:
+    """Each item of the scenario names the processes its stop had to kill by their tag (a
+    node that outlived its launch), so the report shows what was killed; not scored."""
+    for result in results:
+        result.killed = list(session.strays)
     return results
 
 

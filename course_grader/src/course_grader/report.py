@@ -59,6 +59,8 @@ def markdown(report: Report) -> str:
                     f"{_points(r.item.points)})", ""]
         out += [f"- {'pass' if c.passed else 'FAIL'}: {c.name}: {c.evidence}" for c in r.checks]
         out += [f"- note: {note}" for note in r.notes]
+        out += [f"- killed after the scenario's stop: pid {k.pid}: `{k.command}`"
+                for k in r.killed]
         for figure in r.figures:
             out += _figure(figure)
         if r.log:

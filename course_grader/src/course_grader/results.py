@@ -43,6 +43,15 @@ class Figure:
 
 
 @dataclass
+class Killed:
+    """A process of a scenario still running after its stop, killed (SIGKILL) by its tag:
+    its pid and command line (shortened)."""
+
+    pid: int
+    command: str
+
+
+@dataclass
 class ItemResult:
     item: Item
     awarded: float
@@ -51,13 +60,19 @@ class ItemResult:
     log: List[str] = field(default_factory=list)     # lines explaining a failure
     seconds: float = 0.0                             # wall time of the scenario
     figures: List[Figure] = field(default_factory=list)
+    killed: List[Killed] = field(default_factory=list)   # the scenario's leftovers, not scored
 
     @property
     def passed(self) -> bool:
         return self.awarded >= self.item.points
 
     def evidence(self) -> str:
-        return "; ".join(c.evidence for c in self.checks) or "not measured"
+        measured = "; ".join(c.evidence for c in self.checks) or "not measured"
+        if not self.killed:
+            return measured
+        pids = ", ".join(str(k.pid) for k in self.killed)
+        return (f"{measured}; {len(self.killed)} process(es) still running after the "
+                f"scenario's stop were killed (pid {pids})")
 
 
 def judge(item: Item, checks: Iterable[Check], notes: Iterable[str] = (),
@@ -121,4 +136,15 @@ class Report:
                 "figures": [f.file for f in r.figures if f.file],
             } for r in self.results],
             "figures": [dict(asdict(f), item=item) for item, f in self.all_figures()],
+            "scenarios": self.scenarios(),
         }
+
+    def scenarios(self) -> List[Dict]:
+        """One entry per scenario graded, in the items' order: its wall time and the
+        processes killed after its stop (a node that ignored the stop, say)."""
+        entries: Dict[str, Dict] = {}
+        for r in self.results:
+            entries.setdefault(r.item.scenario, {
+                "scenario": r.item.scenario, "seconds": round(r.seconds, 1),
+                "killed": [asdict(k) for k in r.killed]})
+        return list(entries.values())

@@ -18,10 +18,13 @@ from typing import Dict, List, Optional
 
 import rosgraph
 
+from course_grader.results import Killed
+
 PYTHON = "/usr/bin/python3"   # the system interpreter, where ROS lives
 POLL = 0.1                # s between looks at a condition
 LOG_LINES = 12            # lines of a launch's log kept to explain a failure
 SESSION_TAG = "COURSE_GRADER_SESSION"   # environment variable naming a scenario's processes
+COMMAND_CHARS = 200       # characters of a killed process's command line kept for the report
 # lines of a log that explain a failure
 TROUBLE = re.compile(r"\berror|fatal|traceback|exception|failed|not found|process has died|"
                      r"refus", re.IGNORECASE)
@@ -65,16 +68,32 @@ def tagged(tag: str) -> List[int]:
     return found
 
 
-def kill_tagged(tag: str, timeout: float) -> List[int]:
+def command_line(pid: int) -> str:
+    """The command line of ``pid``, its arguments joined by spaces, cut to COMMAND_CHARS
+    (a node's line holds every remapping); its name in brackets when it has none."""
+    try:
+        with open(f"/proc/{pid}/cmdline", "rb") as stream:
+            words = [w.decode(errors="replace") for w in stream.read().split(b"\0") if w]
+        if not words:
+            with open(f"/proc/{pid}/comm", encoding="utf-8", errors="replace") as stream:
+                words = [f"[{stream.read().strip()}]"]
+    except OSError:   # gone meanwhile
+        return "?"
+    text = " ".join(words)
+    return text if len(text) <= COMMAND_CHARS else text[:COMMAND_CHARS - 1] + "\u2026"
+
+
+def kill_tagged(tag: str, timeout: float) -> List[Killed]:
     """SIGKILL to every process tagged ``tag`` until none is left (``timeout`` s at most);
-    the ones killed."""
-    killed: List[int] = []
+    the ones killed, by pid, each with its command line (read before the kill)."""
+    killed: Dict[int, str] = {}
 
     def none_left():
         for pid in tagged(tag):
+            command = killed.get(pid) or command_line(pid)
             try:
                 os.kill(pid, signal.SIGKILL)
-                killed.append(pid)
+                killed[pid] = command
             except ProcessLookupError:
                 pass
         return not tagged(tag)
@@ -82,7 +101,7 @@ def kill_tagged(tag: str, timeout: float) -> List[int]:
         wait_until(none_left, timeout, f"the processes tagged {tag} to end")
     except RunError:
         pass   # a process stuck in the kernel (D state): nothing more a signal can do
-    return sorted(set(killed))
+    return [Killed(pid, killed[pid]) for pid in sorted(killed)]
 
 
 def declared_args(launch_file: str) -> List[str]:
@@ -108,7 +127,7 @@ class Session:
         self.env = dict(env, ROS_MASTER_URI=self.master_uri, ROS_HOME=os.path.join(log_dir, "ros"),
                         ROS_LOG_DIR=os.path.join(log_dir, "ros", "log"), PYTHONUNBUFFERED="1",
                         **{SESSION_TAG: self.tag})
-        self.strays: List[int] = []   # processes killed by their tag after the stop
+        self.strays: List[Killed] = []   # processes killed by their tag after the stop
         self.env.pop("DISPLAY", None)
         self.processes: List[tuple] = []   # (name, Popen, log path)
 

@@ -144,7 +144,8 @@ def test_a_node_in_its_own_session_ignoring_signals_is_killed_at_the_stop(tmp_pa
         pid = ros_run.wait_until(lambda: pid_file.exists() and pid_file.read_text().strip(),
                                  5.0, "the node's pid")
         assert os.getpgid(int(pid)) != os.getpgid(session.processes[0][1].pid)  # own group
-    assert session.strays == [int(pid)]
+    assert [k.pid for k in session.strays] == [int(pid)]
+    assert session.strays[0].command == "sleep 600"
     ros_run.wait_until(lambda: not os.path.exists(f"/proc/{pid}") or
                        _state(pid) == "Z", 5.0, "the node to end")
 
