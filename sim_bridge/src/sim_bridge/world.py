@@ -64,6 +64,17 @@ WORLD_FRAMES = frozenset(("", "world", "/world", "map", "/map"))
 ODE_DEFAULTS = dict(auto_disable_bodies=False, sor_pgs_precon_iters=0, sor_pgs_iters=50,
                     sor_pgs_w=1.3, sor_pgs_rms_error_tol=0.0, contact_surface_layer=0.001,
                     contact_max_correcting_vel=100.0, cfm=0.0, erp=0.2, max_contacts=20)
+# What set_physics_properties takes beyond Gazebo's own checks (it has none: a rate of
+# 1e-9 Hz makes Gazebo's world thread sleep 1e9 s before its next step). The simulator
+# serves requests and Ctrl-C between steps and, paced, sleeps 1/max_update_rate wall
+# seconds a step, so a rate other than 0 (as fast as possible) must be at least this many
+# steps per wall second: the node then answers within a second (the same floor as
+# real_time_factor's 0.001 at the default 1 ms step).
+MIN_UPDATE_RATE = 1.0
+# Simulated time counts whole nanoseconds: a step under half of one rounds to 0 and time
+# would stand still. ROS time's seconds are unsigned 32-bit: a longer step than this (s)
+# cannot be put on /clock even once.
+MAX_TIME_STEP = float(2 ** 32 - 1)
 
 
 @dataclass(frozen=True)
@@ -289,13 +300,24 @@ class World:
         """gazebo_ros's set_physics_properties: the step size (s), the update rate (steps
         per wall second, 0: as fast as possible) and gravity (m/s²). Plugins see the new
         step size and gravity from the next step on; rates they fixed when spawned stay."""
+        now = (f"(it is {self.step_size:g} now; get_physics_properties gives every current "
+               "value)")
         if not math.isfinite(time_step) or time_step <= 0:
-            raise SimError(f"time_step {time_step} must be a positive number of seconds "
-                           f"(it is {self.step_size:g} now; get_physics_properties gives "
-                           "every current value)")
+            raise SimError(f"time_step {time_step} must be a positive number of seconds {now}")
+        if time_step > MAX_TIME_STEP:
+            raise SimError(f"time_step {time_step} is longer than ROS time can carry "
+                           f"({MAX_TIME_STEP:.0f} s) {now}")
+        if round(time_step * 1e9) < 1:
+            raise SimError(f"time_step {time_step} is below a nanosecond, the resolution of "
+                           f"simulated time: the clock would not advance {now}")
         if not math.isfinite(max_update_rate) or max_update_rate < 0:
             raise SimError(f"max_update_rate {max_update_rate} must be 0 (as fast as "
                            "possible) or a positive number of steps per second")
+        if 0 < max_update_rate < MIN_UPDATE_RATE:
+            raise SimError(f"max_update_rate {max_update_rate} is too slow: each step would "
+                           f"wait {1 / max_update_rate:.3g} s of wall time, during which the "
+                           "simulator answers no request; give 0 (as fast as possible) or "
+                           f"at least {MIN_UPDATE_RATE:g} step per second")
         _finite(gravity, "gravity")
         self.step_size = float(time_step)
         self.max_update_rate = float(max_update_rate)

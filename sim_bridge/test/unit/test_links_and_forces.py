@@ -146,18 +146,51 @@ def test_physics_properties_are_reported_and_set(world):
     assert world.physics_properties().gravity == (0.0, 0.0, -1.0)
 
 
+NAN, INF = float("nan"), float("inf")
+
+
 @pytest.mark.parametrize("time_step, rate, gravity, words", [
     (0.0, 1000.0, (0, 0, -9.8), "time_step 0.0 must be a positive"),
-    (float("nan"), 1000.0, (0, 0, -9.8), "time_step nan"),
+    (-0.001, 1000.0, (0, 0, -9.8), "time_step -0.001 must be a positive"),
+    (NAN, 1000.0, (0, 0, -9.8), "time_step nan"),
+    (INF, 1000.0, (0, 0, -9.8), "time_step inf"),
+    # under half a nanosecond the step rounds to 0 ns and the clock would stand still
+    (1e-12, 1000.0, (0, 0, -9.8), "time_step 1e-12 is below a nanosecond"),
+    # int(round(1e300 * 1e9)) overflowed: an OverflowError, not an answer
+    (1e300, 1000.0, (0, 0, -9.8), "time_step 1e\\+300 is longer than ROS time can carry"),
     (0.001, -1.0, (0, 0, -9.8), "max_update_rate -1.0"),
-    (0.001, 1000.0, (0, 0, float("inf")), "gravity"),
+    (0.001, NAN, (0, 0, -9.8), "max_update_rate nan"),
+    (0.001, INF, (0, 0, -9.8), "max_update_rate inf"),
+    # the reported case: pacing would have slept 1e9 s before the next step
+    (0.001, 1e-9, (0, 0, -9.8), "max_update_rate 1e-09 is too slow: each step would wait "
+                                "1e\\+09 s"),
+    (0.001, 0.5, (0, 0, -9.8), "max_update_rate 0.5 is too slow"),
+    (0.001, 1000.0, (0, 0, INF), "gravity"),
+    (0.001, 1000.0, (NAN, 0, -9.8), "gravity \\(nan, 0.0, -9.8\\) is not finite"),
 ])
 def test_bad_physics_properties_are_refused_and_nothing_changes(world, time_step, rate,
                                                                  gravity, words):
     with pytest.raises(SimError, match=words):
         world.set_physics(time_step, rate, gravity)
-    assert world.physics_properties().time_step == 0.001
-    assert world.physics_properties().gravity == (0.0, 0.0, -9.8)
+    properties = world.physics_properties()
+    assert properties.time_step == 0.001 and world.step_ns == 1_000_000
+    assert properties.max_update_rate == pytest.approx(1000.0)
+    assert properties.gravity == (0.0, 0.0, -9.8)
+
+
+@pytest.mark.parametrize("time_step, rate, step_ns", [
+    (0.001, 0.0, 1_000_000),   # 0: as fast as possible, as Gazebo
+    (0.001, 1.0, 1_000_000),   # the slowest rate taken: a step a second
+    (0.001, 1e9, 1_000_000),   # beyond what the machine reaches: as fast as it can
+    (1e-9, 1000.0, 1),         # a nanosecond, the clock's resolution
+    (3600.0, 1.0, 3_600_000_000_000),
+])
+def test_what_gazebo_simulates_is_taken(world, time_step, rate, step_ns):
+    world.set_physics(time_step, rate, (0.0, 0.0, -1.0))
+    assert world.physics_properties().max_update_rate == rate
+    before = world.now_ns
+    world.step()
+    assert world.now_ns - before == step_ns
 
 
 def test_without_gravity_a_dropped_body_floats(weightless):

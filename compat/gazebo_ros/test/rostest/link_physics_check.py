@@ -274,7 +274,16 @@ class LinkAndPhysics(unittest.TestCase):
         self.assert_refused(self.set_physics(0.0, 1000.0, Vector3(0, 0, -9.8),
                                              saved.ode_config),
                             "SetPhysicsProperties", "time_step")
-        self.assertEqual(self.get_physics().time_step, saved.time_step)
+        # a rate whose pacing would sleep 1e9 s a step, a step under the clock's nanosecond
+        self.assert_refused(self.set_physics(saved.time_step, 1e-9, saved.gravity,
+                                             saved.ode_config),
+                            "SetPhysicsProperties", "max_update_rate 1e-09 is too slow")
+        self.assert_refused(self.set_physics(1e-12, saved.max_update_rate, saved.gravity,
+                                             saved.ode_config),
+                            "SetPhysicsProperties", "time_step 1e-12 is below a nanosecond")
+        now = self.get_physics()
+        self.assertEqual((now.time_step, now.max_update_rate, now.gravity),
+                         (saved.time_step, saved.max_update_rate, saved.gravity))
         # no answer fields: the call returns, the simulator logs the cause
         self.clear_wrenches("no_such_model::link")
         self.clear_efforts("no_such_joint")
