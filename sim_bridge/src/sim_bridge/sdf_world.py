@@ -12,7 +12,10 @@ a visual is left out; a collision falls back to the link's other collision shape
 the bounding box of the link's readable visual meshes (with the collision's friction), else
 it is dropped and the link keeps its inertial. Each case is one warning naming the model,
 the link, the file and what was done; the same case in several models (a world saved from
-Gazebo's GUI inlines every copy of a model) is one warning that counts them. Warnings go
+Gazebo's GUI inlines every copy of a model) is one warning that counts them. A free model
+left with no collision shape on any link falls through the ground with gravity, as in
+Gazebo (whose collision with a mesh it cannot load has no shape): no shape is made up for
+it, and one more warning says so, naming the model, its links and their files. Warnings go
 to the ``warn`` callable given, by default to the logger ``rosout.sim_bridge``, which is
 the one ``rospy.logwarn(..., logger_name="sim_bridge")`` uses: in the node they reach the
 console and /rosout, without this module importing rospy.
@@ -107,15 +110,16 @@ class _Warnings:
     def __init__(self) -> None:
         self.cases: Dict[tuple, List] = {}
 
-    def add(self, key: tuple, text: str) -> None:
-        case = self.cases.setdefault(key, [text, set()])
+    def add(self, key: tuple, text: str, counted: str = "link") -> None:
+        """``counted``: what the copies are, in the count (a link, a model)."""
+        case = self.cases.setdefault(key, [text, set(), counted])
         case[1].add(text)
 
     def flush(self, warn: Optional[Warn]) -> None:
         warn = warn or _log_warning
-        for text, texts in self.cases.values():
+        for text, texts, counted in self.cases.values():
             more = len(texts) - 1
-            warn(text + (f" (the same for {more} more link{'s' if more > 1 else ''})"
+            warn(text + (f" (the same for {more} more {counted}{'s' if more > 1 else ''})"
                          if more else ""))
         self.cases.clear()
 
@@ -145,6 +149,8 @@ class LinkSpec:
     mass: float = 1.0
     inertia: Tuple[float, float, float] = (1.0, 1.0, 1.0)  # ixx, iyy, izz (SDF defaults)
     inertial_pose: Pose6 = ZERO_POSE
+    # the collision meshes that could not be read and left the link with no collision shape
+    lost_collisions: List[str] = field(default_factory=list)
 
 
 @dataclass
@@ -396,6 +402,8 @@ def _replace_collisions(link: LinkSpec, failed: List[Tuple[str, _UnreadableMesh]
                 continue
             link.collisions.append(box)
             boxes.append(f"'{uri}' ({' x '.join(f'{v:.3g}' for v in box.size)} m)")
+    if not link.collisions:
+        link.lost_collisions.extend(mesh.uri for _, mesh in failed)
     done = collision_fallback(remaining, boxes)
     for label, mesh in failed:
         warnings.add(("collision", mesh.uri, mesh.reason, done),
@@ -423,7 +431,25 @@ def _model(element: ET.Element, source: str, model_dir: str, warnings: _Warnings
 
 def _offset_links(model: ModelSpec) -> List[LinkSpec]:
     return [LinkSpec(l.name, compose6(model.pose, l.pose), l.collisions, l.visuals, l.mass,
-                     l.inertia, l.inertial_pose) for l in model.links]
+                     l.inertia, l.inertial_pose, l.lost_collisions) for l in model.links]
+
+
+def _check_shapeless(model: ModelSpec, source: str, warnings: _Warnings) -> None:
+    """The warning for a free model that unreadable collision meshes left with no collision
+    shape at all (see the module's notes); called once the model is final (an
+    ``<include>`` may make it static)."""
+    lost = [(link.name, link.lost_collisions) for link in model.links if link.lost_collisions]
+    if model.static or not lost or any(link.collisions for link in model.links):
+        return
+    files = "; ".join(f"link '{name}': mesh " + ", ".join(f"'{uri}'" for uri in uris)
+                      for name, uris in lost)
+    warnings.add(("no collision shape", tuple((n, tuple(u)) for n, u in lost)),
+                 f"{source}: model '{model.name}' is free (not <static>) and has no collision "
+                 f"shape left ({files} cannot be read): it keeps its mass and falls through "
+                 "the ground with gravity, as in Gazebo, where a collision whose mesh cannot "
+                 "be loaded has no shape; make the mesh findable (GAZEBO_MODEL_PATH, the "
+                 "path) or give the link a <box>, <cylinder> or <sphere> collision",
+                 counted="model")
 
 
 def load_model_file(path: str, warn: Optional[Warn] = None) -> Optional[ModelSpec]:
@@ -431,6 +457,8 @@ def load_model_file(path: str, warn: Optional[Warn] = None) -> Optional[ModelSpe
     Meshes that cannot be read are warned about through ``warn`` (see the module's notes)."""
     warnings = _Warnings()
     model = _load_model_file(path, warnings)
+    if model is not None:
+        _check_shapeless(model, path, warnings)
     warnings.flush(warn)
     return model
 
@@ -450,6 +478,7 @@ def parse_model(text: str, source: str = "<sdf>", warn: Optional[Warn] = None) -
     warned about through ``warn`` (see the module's notes)."""
     warnings = _Warnings()
     model = _parse_model(text, source, warnings)
+    _check_shapeless(model, source, warnings)
     warnings.flush(warn)
     return model
 
@@ -567,6 +596,7 @@ def _load_world(path: str, warnings: _Warnings) -> WorldSpec:
         if model.name in names:
             raise SdfError(f"{path}: two models are named '{model.name}'")
         names.add(model.name)
+        _check_shapeless(model, path, warnings)
         spec.models.append(model)
     _apply_state(world, spec, path)
     return spec

@@ -395,10 +395,70 @@ def test_a_missing_sdf_collision_mesh_falls_back_on_the_other_collisions_or_is_d
                        warn=warnings.append)
     link = spec.links[0]
     assert link.collisions == [] and link.visuals == [] and link.mass == 1.0
-    assert len(warnings) == 2
+    assert len(warnings) == 3  # the third: the free model falls (see the test below)
     assert "visual 'v0': mesh 'file:///no/such.dae' (/no/such.dae) does not exist; the visual " \
         "is left out" in warnings[0]
     assert "collision 'c0'" in warnings[1] and "it keeps its inertial" in warnings[1]
+
+
+LOST_MESH = "model://nowhere/meshes/crate.stl"
+LOST_VISUAL = "model://nowhere/meshes/crate.dae"
+FALLS = "falls through the ground with gravity, as in Gazebo"
+
+
+def test_a_free_model_left_without_collision_shape_falls_as_in_gazebo_and_says_so(world):
+    # Gazebo gives a collision whose mesh it cannot load no shape: the body falls through
+    # the ground. The same here, without a made-up shape, and a warning that says so.
+    warnings = []
+    spec = parse_model(sdf_block([sdf_mesh(LOST_MESH)], [("0 0 0 0 0 0", sdf_mesh(LOST_VISUAL))]),
+                       warn=warnings.append)
+    assert spec.links[0].collisions == [] and spec.links[0].lost_collisions == [LOST_MESH]
+    assert len(warnings) == 3
+    for words in ("model 'block' is free (not <static>) and has no collision shape left",
+                  f"link 'link': mesh '{LOST_MESH}' cannot be read", FALLS,
+                  "keeps its mass", "GAZEBO_MODEL_PATH"):
+        assert words in warnings[2]
+    assert not any(FALLS in text for text in warnings[:2])
+    world.add_sdf_model(spec)
+    assert world.model_properties("block").geom_names == ()
+    run(world, 1.0)
+    # ground truth: nothing held it (free fall from 0.5 m: 4.9 m in 1 s, less pybullet's
+    # default damping of a multibody)
+    position, _ = world.pose("block")
+    linear, _ = world.twist("block")
+    assert position[2] < 0.5 - 4.0 and linear[2] < -9.0
+
+
+@pytest.mark.parametrize("static, collisions, rests_at", [
+    (True, [sdf_mesh(LOST_MESH)], 0.5),                       # static: nothing moves it
+    (False, [sdf_mesh(LOST_MESH), "<box><size>1 1 1</size></box>"], 0.5),  # on its box
+])
+def test_a_model_still_held_by_static_or_a_shape_gets_no_falling_warning(world, static,
+                                                                        collisions, rests_at):
+    warnings = []
+    spec = parse_model(sdf_block(collisions, [], static=static), warn=warnings.append)
+    assert len(warnings) == 1 and FALLS not in warnings[0]
+    world.add_sdf_model(spec)
+    run(world, 1.5)
+    assert world.pose("block")[0][2] == pytest.approx(rests_at, abs=HEIGHT_TOLERANCE)
+
+
+def test_copies_of_a_shapeless_model_in_a_world_are_one_warning_and_static_ones_none(
+        tmp_path, monkeypatch):
+    folder = tmp_path / "models" / "lost_crate"
+    folder.mkdir(parents=True)
+    (folder / "model.sdf").write_text(sdf_block([sdf_mesh(LOST_MESH)], []))
+    monkeypatch.setenv("GAZEBO_MODEL_PATH", str(tmp_path / "models"))
+    world_file = tmp_path / "lost.world"
+    world_file.write_text('<sdf version="1.6"><world name="default">' + "".join(
+        f"<include><uri>model://lost_crate</uri><name>{name}</name>{extra}</include>"
+        for name, extra in (("a", ""), ("b", ""), ("c", "<static>true</static>")))
+        + "</world></sdf>")
+    warnings = []
+    load_world(str(world_file), warn=warnings.append)
+    falling = [text for text in warnings if FALLS in text]
+    assert len(falling) == 1
+    assert "model 'a'" in falling[0] and falling[0].endswith("(the same for 1 more model)")
 
 
 def test_an_ascii_stl_scenery_mesh_is_solid(world, tmp_path):
