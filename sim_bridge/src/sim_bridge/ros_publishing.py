@@ -189,6 +189,3 @@ class ClockPublisher:
         self.own_clock.set(rospy.Time(secs, nsecs))
         if self.publisher.impl is not None and self.publisher.impl.connections:
             publish_serialized(self.publisher, CLOCK_WIRE.pack(8, secs, nsecs))
-
-    def unregister(self) -> None:
-        self.publisher.unregister()
