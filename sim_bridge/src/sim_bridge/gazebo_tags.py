@@ -61,10 +61,25 @@ class PluginSpec:
     reference: Optional[str] = None
     # the tags the plugin asked for: what is left was written but means nothing to it
     read: Set[str] = field(default_factory=set)
+    # tag → the value the plugin runs with, "(default)" marked: what --verbose prints
+    used: Dict[str, str] = field(default_factory=dict)
 
     def text(self, tag: str, default: Optional[str] = None) -> Optional[str]:
         self.read.add(tag)
-        return self.params.get(tag, default)
+        value = self.params.get(tag)
+        if value is None:
+            self.use_default(tag, default)
+            return default
+        self.used[tag] = value
+        return value
+
+    def use_default(self, tag: str, default) -> None:
+        """Records that the plugin runs with its default for ``tag``."""
+        self.used[tag] = "(default)" if default is None else f"{default} (default)"
+
+    def summary(self) -> str:
+        """The parameters the plugin runs with, in the order it read them."""
+        return ", ".join(f"<{tag}> {value or repr('')}" for tag, value in self.used.items())
 
     def unread(self) -> List[str]:
         """Parameters written in the plugin that it never asked for, in file order."""

@@ -106,6 +106,10 @@ class Config:
         expected="a positive rate in Hz of simulated time for /gazebo/model_states")
     ray_threads: int = parameter(
         0, non_negative, expected="a whole number of threads for laser rays >= 0 (0: all cores)")
+    # gzserver --verbose: the simulator's own notes (each model of the world, each plugin
+    # with the parameters it runs with) at INFO; rospy's internal loggers stay at INFO
+    verbose: bool = parameter(
+        False, expected="true or false: log what the simulator loads (gzserver --verbose)")
     # false: no /gazebo services or topics (gazebo_ros's enable_ros_network); /clock stays
     enable_ros_network: bool = parameter(
         True, expected="true or false: offer the /gazebo services and topics")
@@ -176,8 +180,9 @@ class PhysicsThread:
 class RosBus(Bus):
     """Bus for plugins, on rospy."""
 
-    def __init__(self, physics: PhysicsThread):
+    def __init__(self, physics: PhysicsThread, verbose: bool = False):
         self.physics = physics
+        self.verbose = verbose
         self._tf = rospy.Publisher("/tf", TFMessage, queue_size=100)
         self._throttle: Dict[str, float] = {}
 
@@ -216,7 +221,11 @@ class RosBus(Bus):
         rospy.logwarn(text)
 
     def debug(self, text):
-        rospy.logdebug(text)
+        # Gazebo's --verbose prints the simulator's messages, not its middleware's: these
+        # notes go out at INFO, and rospy's own loggers are never raised to DEBUG (they
+        # print "Broken Pipe" each time a subscriber leaves)
+        if self.verbose:
+            rospy.loginfo(text)
 
     def warn_throttled(self, key, period, text):
         now = time.monotonic()
@@ -617,12 +626,14 @@ def build_world(config: Config, bus: Bus) -> World:
         world.load_world(load_world(config.world_name))
         rospy.loginfo(f"loaded world {config.world_name}: {len(world.models)} models, "
                       f"step {world.step_size * 1000:g} ms")
+        for name in world.models:
+            bus.debug(f"world model '{name}'")
     world.real_time_factor = config.real_time_factor
     world.paused = config.paused
     return world
 
 
-def main(overrides: Optional[Dict[str, Any]] = None, log_level: int = rospy.INFO) -> None:
+def main(overrides: Optional[Dict[str, Any]] = None) -> None:
     """The simulator node; ``overrides`` take precedence over its parameters (gazebo_ros's
     gzserver passes what its command line says)."""
     refused = one_simulator.refusal(one_simulator.resolved_node_name("gazebo"))
@@ -630,7 +641,7 @@ def main(overrides: Optional[Dict[str, Any]] = None, log_level: int = rospy.INFO
         print(f"sim_bridge cannot start: {refused}", file=sys.stderr)
         raise SystemExit(ALREADY_RUNNING_STATUS)
     # rospy's signal handling off: see sim_bridge.stop_signals
-    rospy.init_node("gazebo", log_level=log_level, disable_signals=True)
+    rospy.init_node("gazebo", disable_signals=True)
     batch_queued_writes()  # see sim_bridge.ros_publishing
     # rospy's writer and reader threads get the interpreter at least this often while the
     # loop steps (Python's default, 5 ms, is 100 ms of simulated time at 20x real time:
@@ -640,7 +651,7 @@ def main(overrides: Optional[Dict[str, Any]] = None, log_level: int = rospy.INFO
     physics = PhysicsThread()
     try:
         config = Config.from_parameters(overrides)
-        world = build_world(config, RosBus(physics))
+        world = build_world(config, RosBus(physics, config.verbose))
     except (ValueError, SdfError) as error:
         rospy.logfatal(f"sim_bridge cannot start: {error}")
         raise SystemExit(1) from None

@@ -5,7 +5,8 @@ worlds/empty.world"/>`` (empty_world.launch does). This reads that command line 
 does and hands what it means to sim_bridge's node:
 
   -u, --pause             start with physics paused
-  --verbose               log at debug level
+  --verbose               log what the simulator loads (each world model, each plugin with
+                          the parameters it runs with), as gzserver --verbose does
   -e, --physics ENGINE    accepted: sim_bridge simulates with Bullet whatever is asked
   -r, --record, --record_path, --record_encoding, --record_period, --record_filter
                           accepted; Gazebo's log recording is not emulated (one warning)
@@ -44,8 +45,8 @@ IGNORED_WITH_VALUE = ("-s", "--server-plugin", "-g", "--gui-plugin", "--record_p
 IGNORED_FLAGS = ("-q", "--quiet", "--lockstep", "--minimal_comms", "--play")
 
 
-def parse_command_line(argv: List[str]) -> Tuple[Dict[str, Any], int, List[str]]:
-    """(overrides for sim_bridge's Config, rospy log level, notes for the log)."""
+def parse_command_line(argv: List[str]) -> Tuple[Dict[str, Any], List[str]]:
+    """(overrides for sim_bridge's Config, notes for the log)."""
     parser = argparse.ArgumentParser(prog="gzserver", add_help=False)
     parser.add_argument("-u", "--pause", action="store_true")
     parser.add_argument("--verbose", action="store_true")
@@ -66,6 +67,8 @@ def parse_command_line(argv: List[str]) -> Tuple[Dict[str, Any], int, List[str]]
         overrides["world_name"] = worlds[-1]
     if args.pause:
         overrides["paused"] = True
+    if args.verbose:
+        overrides["verbose"] = True
     if args.seed is not None:
         overrides["seed"] = Given(args.seed, "gzserver --seed")
     if args.record or args.record_path:
@@ -75,7 +78,7 @@ def parse_command_line(argv: List[str]) -> Tuple[Dict[str, Any], int, List[str]]
                      "Bullet")
     if unknown:
         notes.append(f"ignored gzserver options: {' '.join(unknown)}")
-    return overrides, (rospy.DEBUG if args.verbose else rospy.INFO), notes
+    return overrides, notes
 
 
 def _extend_path(variable: str, folders: List[str]) -> None:
@@ -113,11 +116,11 @@ def main(argv: Optional[List[str]] = None, gui: Optional[bool] = None) -> None:
     """gzserver (``gui`` None: the ``~gui`` parameter decides) or gazebo (``gui`` True)."""
     from sim_bridge import ros_node  # the engine; imported late so --help stays fast
 
-    overrides, log_level, notes = parse_command_line(
+    overrides, notes = parse_command_line(
         rospy.myargv(argv if argv is not None else sys.argv)[1:])
     if gui is not None:
         overrides["gui"] = gui
     add_search_paths()
     for note in notes:
         print(f"gzserver: {note}", file=sys.stderr)
-    ros_node.main(overrides, log_level)
+    ros_node.main(overrides)

@@ -22,11 +22,13 @@ from __future__ import annotations
 
 import argparse
 import re
+import socket
 import sys
 import time
 from typing import List, Optional
 
 import rosgraph
+import rosgraph.network
 import rospy
 from geometry_msgs.msg import Pose
 from std_msgs.msg import String
@@ -51,6 +53,9 @@ POLL_PERIOD = 0.1
 # lookup is one call to the master; rospy's wait_for_service looks every 0.3 s, which was
 # most of the time from a launch's start to its robot's first scan.
 SERVICE_POLL_PERIOD = 0.02
+# How long a probe of the spawn service waits for the connection (wall seconds); on this
+# machine a dead simulator's port refuses at once, a live one accepts in well under 1 ms.
+PROBE_TIMEOUT = 1.0
 
 
 class SpawnError(Exception):
@@ -97,13 +102,27 @@ def _wait(condition, what: str, timeout: float, period: float = POLL_PERIOD):
     raise SpawnError("shut down while waiting")
 
 
-def service_registered(service: str) -> bool:
-    """Whether the master knows ``service``: a rospy or roscpp service registers once it
-    takes connections."""
+def service_answers(service: str) -> bool:
+    """Whether ``service`` is registered at the master *and* takes a connection, as
+    rospy.wait_for_service checks it: a simulator that was killed (SIGKILL, a crash, the OOM
+    killer) never unregisters, and its stale registration answers ``lookupService`` until a
+    new simulator registers the name again. A stale one is "not up yet", not a failure."""
     try:
-        rosgraph.Master(rospy.get_name()).lookupService(rospy.resolve_name(service))
-        return True
+        uri = rosgraph.Master(rospy.get_name()).lookupService(rospy.resolve_name(service))
     except (rosgraph.MasterError, OSError):  # not registered yet; the master unreachable
+        return False
+    try:
+        address = rospy.core.parse_rosrpc_uri(uri)
+    except rospy.ROSException:  # a malformed registration: not a service that answers
+        return False
+    try:
+        with socket.create_connection(address, timeout=PROBE_TIMEOUT) as connection:
+            # the probe header rospy sends: the server reads it and drops the connection
+            rosgraph.network.write_ros_handshake_header(connection, {
+                "probe": "1", "md5sum": "*", "callerid": rospy.get_name(),
+                "service": rospy.resolve_name(service)})
+        return True
+    except OSError:  # refused (the process is gone), unreachable, or timed out
         return False
 
 
@@ -165,7 +184,7 @@ def spawn(args: argparse.Namespace) -> None:
         xml = package_to_model(xml)
     service = f"{namespace}/spawn_{'urdf' if args.urdf else 'sdf'}_model"
     try:
-        _wait(lambda: service_registered(service), "", args.timeout, SERVICE_POLL_PERIOD)
+        _wait(lambda: service_answers(service), "", args.timeout, SERVICE_POLL_PERIOD)
     except SpawnError:
         raise SpawnError(f"service {service} not available after {args.timeout:g} s; is the "
                          "simulator (gazebo_ros's empty_world.launch) running?") from None

@@ -55,7 +55,7 @@ def links_read_by_model_plugins(tags: GazeboTags, canonical: str) -> Set[str]:
     for spec in tags.plugins:
         if spec.filename not in MODEL_PLUGINS:
             continue
-        body = spec.text("bodyName")
+        body = spec.params.get("bodyName")  # not marked read: the plugin reads it itself
         if body is None and spec.filename in BODY_DEFAULTS_TO_CANONICAL:
             body = canonical
         if body:
@@ -77,6 +77,8 @@ def _build(context: PluginContext, spec: PluginSpec, what: str,
         context.bus.warn(f"model '{context.model_name}': {what} not loaded: {error}; the "
                          "model is spawned without it")
         return
+    context.bus.debug(f"model '{context.model_name}': {what} loaded: "
+                      f"{spec.summary() or 'no parameters'}")
     unread = spec.unread()
     if unread:  # e.g. <torque> where Noetic's plugin reads <wheelTorque>
         context.bus.warn(f"model '{context.model_name}': {what} does not read "

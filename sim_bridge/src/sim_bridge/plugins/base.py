@@ -168,6 +168,7 @@ class Plugin:
         reads it as a number (e.g. ``<wheelAcceleration>false</wheelAcceleration>`` is 0)."""
         text = self.spec.text(tag)
         if text is None or text == "":
+            self.spec.use_default(tag, default)
             return default
         if false_value is not None and text.strip().lower() == "false":
             return false_value
@@ -183,6 +184,7 @@ class Plugin:
     def flag(self, tag: str, default: bool) -> bool:
         text = self.spec.text(tag)
         if text is None or text == "":
+            self.spec.use_default(tag, default)
             return default
         return text.strip().lower() in ("1", "true")
 
