@@ -106,6 +106,10 @@ class GazeboTags:
     self_collide: bool = False
     # tag → where it was first seen, for tags read but not emulated
     not_emulated: Dict[str, str] = field(default_factory=dict)
+    # reference → what its block held (tags), for <gazebo reference> naming nothing the
+    # model has: Gazebo's URDF-to-SDF conversion finds no element to put them in and the
+    # model loads without them (robots comment a link out and leave its block)
+    unknown_references: Dict[str, List[str]] = field(default_factory=dict)
 
 
 def _float(text: str, what: str, source: str) -> float:
@@ -156,6 +160,7 @@ def read_gazebo_tags(model: RobotModel) -> GazeboTags:
     sensors: List[SensorSpec] = []
     robot_self_collide = False
     not_emulated: Dict[str, str] = {}
+    unknown_references: Dict[str, List[str]] = {}
     for reference, block in model.gazebo:
         if reference is not None and reference not in model.links:
             if reference in model.joints:
@@ -163,7 +168,10 @@ def read_gazebo_tags(model: RobotModel) -> GazeboTags:
                     if child.tag in JOINT_TAGS_NOT_EMULATED:
                         not_emulated.setdefault(child.tag, f"joint '{reference}'")
                 continue
-            raise UrdfError(f"{source}: <gazebo reference='{reference}'> names no link")
+            unknown_references.setdefault(reference, []).extend(
+                f"<{child.tag}{' ' + repr(child.get('name')) if child.get('name') else ''}>"
+                for child in block)
+            continue
         for child in block:
             tag = child.tag
             text = value_of(child)
@@ -205,7 +213,8 @@ def read_gazebo_tags(model: RobotModel) -> GazeboTags:
                     surface.gravity = _bool(text) if tag == "gravity" else not _bool(text)
                 else:  # maxVel, maxContacts, dampingFactor, laserRetro, ...
                     not_emulated.setdefault(tag, f"link '{reference}'")
-    return GazeboTags(surfaces, plugins, sensors, robot_self_collide, not_emulated)
+    return GazeboTags(surfaces, plugins, sensors, robot_self_collide, not_emulated,
+                      unknown_references)
 
 
 def plugin_joint_names(spec: PluginSpec, tags: Tuple[str, ...]) -> List[str]:

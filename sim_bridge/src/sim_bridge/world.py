@@ -538,6 +538,10 @@ class World:
         for tag, where in tags.not_emulated.items():
             self.bus.warn(f"model '{name}': <{tag}> in {where} is not emulated by sim_bridge; "
                           "ignored")
+        for reference, held in tags.unknown_references.items():
+            self.bus.warn(f"model '{name}': <gazebo reference='{reference}'> names no link or "
+                          f"joint of the model; its block ({', '.join(held) or 'empty'}) is "
+                          "ignored and the model loads without it, as in Gazebo")
         joints = dict(joints or {})
         unknown = [j for j in joints if j not in description.joints]
         if unknown:

@@ -22,10 +22,12 @@ def test_gazebo_tags_surfaces_plugins_and_sensors(diff_bot_xml):
         ("ray", "laser", "scan")
 
 
-def test_a_gazebo_reference_to_no_link_is_named():
-    text = "<robot name='r'><link name='a'/><gazebo reference='b'><mu1>1</mu1></gazebo></robot>"
-    with pytest.raises(UrdfError, match="reference='b'"):
-        read_gazebo_tags(parse_urdf(text, "r.urdf"))
+def test_a_gazebo_reference_to_no_link_is_kept_aside_with_what_it_held():
+    text = ("<robot name='r'><link name='a'/><gazebo reference='b'><mu1>1</mu1>"
+            "<sensor name='cam' type='camera'/></gazebo></robot>")
+    tags = read_gazebo_tags(parse_urdf(text, "r.urdf"))
+    assert tags.unknown_references == {"b": ["<mu1>", "<sensor 'cam'>"]}
+    assert not tags.surfaces and not tags.sensors
 
 
 def test_the_test_world_loads_with_its_includes():

@@ -343,15 +343,28 @@ def test_old_imu_needs_a_body_hectors_take_the_canonical_link(world, bot):
     assert build(world, "libhector_gazebo_ros_gps.so").body == "base_link"
 
 
-@pytest.mark.parametrize("params, words", [
-    ({"referenceLatitude": "north"}, "<referenceLatitude> 'north' is not a number"),
-    ({"status": "1.5"}, "<status> 1.5 is not a whole number"),
-    ({"gaussianNoise": "1 2"}, "<gaussianNoise> '1 2' is not three numbers"),
-    ({"topicName": ""}, "<topicName> is empty"),
+@pytest.mark.parametrize("params, words, attribute, default", [
+    ({"referenceLatitude": "north"}, "<referenceLatitude> 'north' is not a number",
+     "latitude", 49.9),
+    ({"status": "1.5"}, "<status> '1.5' is not a whole number from -128 to 127", "status", 0),
 ])
-def test_gps_parameters_that_cannot_be_read_are_named(world, bot, params, words):
-    with pytest.raises(PluginError, match=words):
-        build(world, "libhector_gazebo_ros_gps.so", **params)
+def test_gps_values_that_cannot_be_read_take_the_default_named(world, bot, params, words,
+                                                               attribute, default):
+    plugin = build(world, "libhector_gazebo_ros_gps.so", **params)
+    (warning,) = plugin.context.bus.warnings
+    assert words in warning and f"its default, {default}" in warning
+    assert getattr(plugin, attribute) == pytest.approx(default)
+
+
+def test_gps_noise_that_cannot_be_read_is_named_and_taken_as_none(world, bot):
+    plugin = build(world, "libhector_gazebo_ros_gps.so", gaussianNoise="1 2")
+    assert "<gaussianNoise> '1 2' is not three numbers" in plugin.context.bus.warnings[0]
+    assert not plugin.position_model.gaussian_noise.any()
+
+
+def test_a_gps_topic_written_empty_is_refused(world, bot):
+    with pytest.raises(PluginError, match="<topicName> is empty"):
+        build(world, "libhector_gazebo_ros_gps.so", topicName="")
 
 
 def plugin_robot(plugin):

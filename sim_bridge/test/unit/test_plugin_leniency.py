@@ -70,3 +70,55 @@ def test_gazebo_ros_controls_own_parameters_are_read(world, bus, diff_bot_xml):
     world.spawn_urdf("r", xml, (0, 0, 0))
     assert "r" in world.models
     assert not [w for w in bus.warnings if "does not read" in w or "robotSimType" in w]
+
+
+# --- what Gazebo loads with a warning ---------------------------------------------------
+def drive(bus, world, forward, seconds):
+    from geometry_msgs.msg import Twist
+    twist = Twist()
+    twist.linear.x = forward
+    bus.subscriptions["/cmd_vel"](twist)
+    run(world, seconds)
+
+
+def test_a_gazebo_block_for_a_link_the_robot_lacks_warns_and_the_robot_runs(world, bus,
+                                                                             diff_bot_xml):
+    # a robot whose camera link was commented out, its <gazebo> block left in
+    xml = diff_bot_xml().replace("</robot>", """<gazebo reference="camera_link">
+      <material>Gazebo/Black</material>
+      <sensor name="camera" type="camera"><update_rate>30</update_rate></sensor>
+    </gazebo></robot>""")
+    world.spawn_urdf("bot", xml, (0, 0, 0.06))
+    (warning,) = [w for w in bus.warnings if "camera_link" in w]
+    assert "names no link or joint" in warning and "<sensor 'camera'>" in warning
+    drive(bus, world, 0.3, 1.0)
+    assert world.pose("bot")[0][0] > 0.15  # it drives: the rest of its <gazebo> tags run
+
+
+def test_a_drive_parameter_gazebo_cannot_read_takes_its_default_and_the_plugin_runs(
+        world, bus, diff_bot_xml):
+    # <wheelAcceleration>true</wheelAcceleration>, seen in a homework robot: 0 (no limit)
+    world.spawn_urdf("bot", diff_bot_xml(wheel_acceleration="true"), (0, 0, 0.06))
+    (warning,) = [w for w in bus.warnings if "<wheelAcceleration>" in w]
+    assert "'true' is not a number" in warning and "its default, 0" in warning
+    assert not [w for w in bus.warnings if "not loaded" in w]
+    drive(bus, world, 0.3, 1.0)
+    assert world.pose("bot")[0][0] > 0.15
+
+
+UNREADABLE = robot("""<plugin name="truth" filename="libgazebo_ros_p3d.so">
+  <bodyName>base</bodyName><topicName>ground_truth</topicName><updateRate>often</updateRate>
+  <xyzOffsets>1 two 3</xyzOffsets><gaussianNoise>nan</gaussianNoise></plugin>""")
+
+
+def test_every_unreadable_value_is_named_with_the_default_used(world, bus):
+    world.spawn_urdf("r", UNREADABLE, (0, 0, 0.1))
+    named = {tag: w for w in bus.warnings for tag in ("updateRate", "xyzOffsets", "gaussianNoise")
+             if f"<{tag}>" in w}
+    assert "'often' is not a number" in named["updateRate"]
+    assert "'1 two 3' is not three numbers" in named["xyzOffsets"]
+    assert "its default, 0 0 0" in named["xyzOffsets"]
+    assert "'nan' is not a finite number" in named["gaussianNoise"]
+    run(world, 0.1)
+    message = bus.published["/ground_truth"][-1]
+    assert abs(message.pose.pose.position.z - world.pose("r")[0][2]) < 1e-6  # no offset, no noise

@@ -175,11 +175,23 @@ class Plugin:
         try:
             value = float(text)
         except ValueError:
-            raise PluginError(f"plugin '{self.spec.name}' ({self.spec.filename}): <{tag}> "
-                              f"'{text}' is not a number") from None
+            return self.unreadable(tag, text, "a number", default)
         if not np.isfinite(value):
-            raise PluginError(f"plugin '{self.spec.name}': <{tag}> must be finite")
+            return self.unreadable(tag, text, "a finite number", default)
         return value
+
+    def unreadable(self, tag: str, text: str, expected: str, default):
+        """A value written that the plugin cannot read: Gazebo's plugins log an error and
+        run with their default (``<wheelAcceleration>true</wheelAcceleration>`` is read as
+        0), so the plugin runs; the line names the tag, the text and the default used."""
+        self.spec.used[tag] = f"{default} (default; '{text}' unreadable)"
+        shown = " ".join(f"{v:g}" for v in default) if isinstance(default, (tuple, list)) \
+            else default
+        self.context.bus.warn(
+            f"model '{self.context.model_name}': plugin '{self.spec.name}' "
+            f"({self.spec.filename}): <{tag}> '{text}' is not {expected}; the plugin runs "
+            f"with its default, {shown}")
+        return default
 
     def flag(self, tag: str, default: bool) -> bool:
         text = self.spec.text(tag)

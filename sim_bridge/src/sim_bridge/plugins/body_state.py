@@ -72,8 +72,7 @@ def vector3(plugin: Plugin, tag: str, default: Sequence[float] = (0.0, 0.0, 0.0)
     except ValueError:
         values = []
     if len(values) != 3 or not all(math.isfinite(v) for v in values):
-        raise PluginError(f"plugin '{plugin.spec.name}' ({plugin.spec.filename}): <{tag}> "
-                          f"'{text}' is not three numbers; write x y z")
+        values = plugin.unreadable(tag, text, "three numbers (x y z)", tuple(default))
     return np.asarray(values, dtype=float)
 
 

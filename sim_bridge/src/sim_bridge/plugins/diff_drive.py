@@ -47,8 +47,7 @@ class DiffDrive(DriveBase):
         self.publish_joint_state = self.flag("publishWheelJointState", False)
         source = (self.param("odometrySource", "world") or "world").strip().lower()
         if source not in ("world", "encoder", "1", "0"):
-            raise PluginError(f"plugin '{spec.name}': odometrySource '{source}' is neither "
-                              "world nor encoder")
+            source = self.unreadable("odometrySource", source, "world or encoder", "world")
         self.encoder = source in ("encoder", "0")
         self.rate = Rate(self.number("updateRate", 100.0))
         self.joints_out = (context.bus.publisher(self.topic("joint_states"), JointState,

@@ -100,8 +100,8 @@ class HectorGps(Plugin):
     def _integer(self, tag: str, default: int, low: int, high: int) -> int:
         value = self.number(tag, default)
         if value != int(value) or not low <= value <= high:
-            raise PluginError(f"plugin '{self.spec.name}' ({self.spec.filename}): <{tag}> "
-                              f"{value:g} is not a whole number from {low} to {high}")
+            return self.unreadable(tag, f"{value:g}", f"a whole number from {low} to {high}",
+                                   default)
         return int(value)
 
     def after_step(self, now_ns: int) -> None:

@@ -8,6 +8,8 @@ robotNamespace. Velocities are in the reporting frame.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pybullet as pb
 from nav_msgs.msg import Odometry
@@ -45,8 +47,8 @@ class P3D(Plugin):
             values = [float(v) for v in text.split()]
         except ValueError:
             values = []
-        if len(values) != 3:
-            raise PluginError(f"plugin '{self.spec.name}': <{tag}> '{text}' is not 3 numbers")
+        if len(values) != 3 or not all(math.isfinite(v) for v in values):
+            return list(self.unreadable(tag, text, "three numbers (x y z)", (0.0, 0.0, 0.0)))
         return values
 
     def _link_velocity(self, link: str):
