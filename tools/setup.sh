@@ -25,7 +25,10 @@ check_platform
 # configs (lib*-msgs-dev, for packages that generate messages), rostest's CMake config (so
 # that `catkin_make run_tests` runs the packages' add_rostest tests), the robot tools,
 # headless rviz, the venv; what course packages build against (C++ nodes: roscpp, tf, urdf and
-# the message headers; Python nodes: tf.transformations).
+# the message headers; Python nodes: tf.transformations); what robot packages' launch files
+# start and their CMakeLists find (tf's and tf2_ros's static_transform_publisher, nodelet,
+# topic_tools' relay and throttle, rviz and robot_state_publisher as C++ libraries,
+# tf_conversions for students' movers).
 apt_packages=(
   catkin catkin-lint python3-catkin-pkg ros-message-generation ros-message-runtime
   python3-genpy python3-genmsg cmake make g++
@@ -43,6 +46,9 @@ apt_packages=(
   python3-python-qt-binding libdiagnostic-msgs-dev python3-diagnostic-msgs
   ros-robot-state-publisher joint-state-publisher joint-state-publisher-gui rviz
   liburdfdom-tools
+  tf-tools tf2-tools libnodeletlib-tools python3-nodelet libnodeletlib-dev topic-tools
+  python3-topic-tools libtopic-tools-dev librviz-dev librobot-state-publisher-dev
+  python3-tf-conversions libros-rosgraph-msgs-dev libactionlib-dev
   xvfb xauth x11-utils xdotool imagemagick
   python3-venv python3-pip
 )

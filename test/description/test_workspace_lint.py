@@ -19,10 +19,11 @@ def workspace_files(pattern):
 
 
 PACKAGES = [os.path.dirname(p) for p in workspace_files("package.xml")]
-# roslaunch-check reads a launch file's package: tools/bench/bench.launch is in none (make bench
-# runs it)
+# roslaunch-check reads a launch file's package: tools/bench/bench.launch and the e2e tests'
+# data (test/e2e/data) are in none (make bench and the e2e tests run them)
 LAUNCH_FILES = [p for p in workspace_files("*.launch") + workspace_files("*.test")
-                if ("/test/" not in p or p.endswith(".test")) and not p.startswith("tools/")]
+                if ("/test/" not in p or p.endswith(".test"))
+                and not p.startswith(("tools/", "test/"))]
 URDF_FILES = workspace_files("*.urdf")
 # robot xacros (macro files live under inc/ and are not robots by themselves)
 XACRO_ROBOTS = [p for p in workspace_files("*.xacro") if f"{os.sep}inc{os.sep}" not in p]

@@ -151,3 +151,38 @@ def settled_yaw(env, tolerance=0.05, timeout=20.0):
 
     headless.wait_until(still, timeout, "the robot to stop turning", interval=0.3)
     return samples[-1]
+
+
+def test_what_robot_packages_find_and_start_is_there(overlay, ros_env, results_dir):
+    """course_robot_description's CMakeLists finds rviz and robot_state_publisher (Debian's
+    librviz-dev, librobot-state-publisher-dev); course_robot_control: a C++ node whose
+    CMakeLists finds controller_manager and joint_state_controller (not roscpp) links and runs; its launch file loads $(find joint_state_controller)'s yaml and
+    starts tf's and tf2_ros's static_transform_publisher, topic_tools' relay and nodelet."""
+    workspace, overlay_env = overlay
+    assert os.access(workspace / "devel" / "lib" / "course_robot_control" / "hardware_hello",
+                     os.X_OK)
+    env = dict(overlay_env, ROS_MASTER_URI=ros_env["ROS_MASTER_URI"],
+               ROS_HOME=ros_env["ROS_HOME"])
+
+    def run(*command):
+        return subprocess.run(list(command), env=env, capture_output=True, text=True,
+                              timeout=30, check=False)
+
+    with headless.roslaunch(["course_robot_control", "extras.launch"], env,
+                            os.path.join(results_dir, "extras.log")) as launch:
+        # the C++ node's latched message, through topic_tools' relay
+        relayed = headless.wait_until(
+            lambda: run("rostopic", "echo", "-n", "1", "/status").stdout, 60,
+            "hardware_hello's status relayed on /status")
+        assert "hardware up" in relayed
+        kind = run("rosparam", "get", "/joint_state_controller/type").stdout.strip()
+        assert kind == "joint_state_controller/JointStateController"
+        assert run("rosparam", "get", "/joint_state_controller/publish_rate").stdout.strip() \
+            == "50"
+        # tf's publisher repeats on /tf every 100 ms; tf2_ros's is latched on /tf_static
+        tf = run("rostopic", "echo", "-n", "1", "/tf").stdout
+        assert "child_frame_id: \"camera_link\"" in tf, tf
+        tf_static = run("rostopic", "echo", "-n", "1", "/tf_static").stdout
+        assert "child_frame_id: \"imu_link\"" in tf_static, tf_static
+        assert "/nodelet_manager" in run("rosnode", "list").stdout
+        assert launch.running(), launch.output()[-3000:]
