@@ -66,6 +66,11 @@ class SdfError(ValueError):
     """A world or model that cannot be loaded; the message names the file and the cause."""
 
 
+class UnsupportedModel(SdfError):
+    """A well-formed model that sim_bridge cannot build (an articulated SDF model). In a
+    world it is left out with one warning and the world runs; spawn_sdf_model refuses it."""
+
+
 def _checked(check, values, what: str, source: str) -> Tuple[float, ...]:
     """urdf_tools' ``check`` (finite, positive) of ``values``, its refusal as SdfError."""
     try:
@@ -424,8 +429,9 @@ def _model(element: ET.Element, source: str, model_dir: str, warnings: _Warnings
         if inner is not None:
             model.links.extend(_offset_links(inner))
     if element.find("joint") is not None and not static:
-        raise SdfError(f"{source}: model '{name}' has joints; sim_bridge loads jointed robots "
-                       "from URDF (spawn_model -urdf), SDF models must be single bodies")
+        raise UnsupportedModel(
+            f"{source}: model '{name}' has joints; sim_bridge builds articulated models from "
+            "URDF (spawn_model -urdf), SDF models only as single bodies")
     return model
 
 
@@ -585,11 +591,17 @@ def _load_world(path: str, warnings: _Warnings) -> WorldSpec:
         spec.gravity = _numbers(world.findtext("gravity"), 3, "<gravity>", path)  # type: ignore
     names = set()
     for element in world:
-        if element.tag == "include":
-            model = _include(element, path, warnings)
-        elif element.tag == "model":
-            model = _model(element, path, os.path.dirname(path), warnings)
-        else:
+        try:
+            if element.tag == "include":
+                model = _include(element, path, warnings)
+            elif element.tag == "model":
+                model = _model(element, path, os.path.dirname(path), warnings)
+            else:
+                continue
+        except UnsupportedModel as error:
+            # one model must not take the world down (students add Gazebo's robots to theirs)
+            warnings.add(("unsupported", str(error)), f"{error}: left out of the world, which "
+                         "runs without it", counted="model")
             continue
         if model is None:  # a light: accepted, ignored
             continue

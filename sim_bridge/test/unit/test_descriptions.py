@@ -69,3 +69,35 @@ def test_an_unknown_model_uri_names_the_folders_searched(tmp_path, monkeypatch):
 def test_broken_sdf_is_named(text, fault):
     with pytest.raises(SdfError, match=fault):
         parse_model(text, "m.sdf")
+
+
+JOINTED_WORLD = """<?xml version="1.0"?>
+<sdf version="1.6"><world name="default">
+  <model name="crate"><static>true</static><pose>2 0 0.25 0 0 0</pose>
+    <link name="body"><collision name="c"><geometry><box><size>0.5 0.5 0.5</size></box>
+    </geometry></collision></link></model>
+  <model name="r2"><pose>0 0 0.1 0 0 0</pose>
+    <link name="chassis"><collision name="c"><geometry><box><size>0.4 0.2 0.1</size></box>
+    </geometry></collision></link>
+    <link name="wheel"><pose>0 0.15 0 1.5707 0 0</pose><collision name="c"><geometry>
+    <cylinder><radius>0.05</radius><length>0.02</length></cylinder></geometry></collision></link>
+    <joint name="axle" type="revolute"><parent>chassis</parent><child>wheel</child>
+    <axis><xyz>0 0 1</xyz></axis></joint></model>
+</world></sdf>"""
+
+
+def test_a_jointed_sdf_model_is_left_out_of_its_world_with_one_warning(tmp_path):
+    # students add Gazebo's robots to their worlds; before, the whole world refused to load
+    path = tmp_path / "ddrive.world"
+    path.write_text(JOINTED_WORLD)
+    warnings = []
+    world = load_world(str(path), warnings.append)
+    assert [m.name for m in world.models] == ["crate"]
+    (warning,) = warnings
+    assert "model 'r2' has joints" in warning and "left out of the world" in warning
+
+
+def test_spawning_a_jointed_sdf_model_is_refused_naming_it():
+    text = JOINTED_WORLD.split("</model>", 1)[1].rsplit("</world>", 1)[0]
+    with pytest.raises(SdfError, match="model 'r2' has joints"):
+        parse_model(f"<sdf version='1.6'>{text}</sdf>", "spawn request")
