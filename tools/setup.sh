@@ -85,19 +85,16 @@ if [ "$(cat "$stamp" 2>/dev/null)" = "$want" ]; then
   echo "setup: venv: requirements up to date"
 else
   echo "setup: venv: installing tools/requirements.txt"
+  rm -f "$venv/bin/xacro"  # the link made below: pip must not write through it
   "$venv/bin/python3" -m pip install --quiet --disable-pip-version-check -r "$requirements" 2>&1 \
     | grep -v "is ignored: it is neither a file nor a directory" || true
   "$venv/bin/python3" -c "import pybullet, xacro, ompl, pytest" 2>/dev/null \
     || { echo "setup: venv: the pinned packages do not import" >&2; exit 1; }
-  # xacro 1.13.3 (the last ROS 1 xacro on PyPI) calls yaml.load(f) without a Loader, which
-  # PyYAML 6 refuses, so xacro's load_yaml() fails; later upstream releases read yaml
-  # safely but are not on PyPI. Patch that one line.
-  xacro_init=$("$venv/bin/python3" -c "import xacro; print(xacro.__file__)")
-  sed -i 's/        return yaml.load(f)$/        return yaml.safe_load(f)/' "$xacro_init"
-  grep -q "return yaml.safe_load(f)" "$xacro_init" \
-    || { echo "setup: venv: could not patch xacro's load_yaml in $xacro_init" >&2; exit 1; }
   echo "$want" > "$stamp"
 fi
+# The venv's `xacro` command is PyPI's, which finds packages through ROS 2's ament index; the
+# workspace's (compat/xacro, rospkg's $(find)) takes its place on PATH.
+ln -sfn "$repo/compat/xacro/xacro" "$venv/bin/xacro"
 
 # --- 4. the catkin build --------------------------------------------------------------
 ws="$repo/.ws"

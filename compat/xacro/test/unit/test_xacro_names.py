@@ -1,5 +1,8 @@
 """xacro's names: `rosrun xacro xacro`, `$(find xacro)/xacro` and the older
 `$(find xacro)/xacro.py` expand a file the same way, `$(find pkg)` included."""
+import math
+import os
+import re
 import subprocess
 
 import pytest
@@ -37,23 +40,52 @@ def test_a_missing_file_is_named(tmp_path):
     assert result.returncode != 0 and "nothere.xacro" in result.stderr
 
 
-CHECK_LIGHT_ROSLAUNCH = """
-import importlib.machinery, sys
-command = importlib.machinery.SourceFileLoader("xacro_command", sys.argv[1]).load_module()
-command._light_roslaunch()
-from roslaunch import substitution_args
-print("light", "roslaunch.launch" not in sys.modules, substitution_args.__name__)
-import roslaunch
-print("whole", callable(roslaunch.main), "roslaunch.launch" in sys.modules)
-"""
+# Noetic's xacro language (1.14), which PyPI's 1.13 lacked: the xacro. namespace with
+# load_yaml, yaml angle tags, python. and math. names, $(find) inside a yaml path
+NOETIC = """<?xml version="1.0"?>
+<robot name="arm" xmlns:xacro="http://www.ros.org/wiki/xacro">
+  <xacro:property name="cfg" value="${xacro.load_yaml('$(find xacro)/../../test_results/KEY')}"/>
+  <xacro:property name="joints" value="${python.len(cfg['joints'])}"/>
+  <link name="base"/>
+  <xacro:macro name="j" params="n limit:=${cfg['limit']}">
+    <joint name="j${n}" type="revolute"><parent link="base"/><child link="l${n}"/>
+      <limit lower="${-limit}" upper="${limit}" effort="1" velocity="${math.pi}"/></joint>
+    <link name="l${n}"/>
+  </xacro:macro>
+  <xacro:j n="1"/>
+  <xacro:if value="${joints == 2}"><xacro:j n="2" limit="${cfg['joints'][1]}"/></xacro:if>
+</robot>"""
+YAML = "limit: !degrees 90\njoints: [!radians 1.0, !degrees 45]\n"
 
 
-def test_xacro_loads_only_roslaunchs_substitution_args_and_the_rest_on_demand():
-    """The command skips roslaunch's __init__ (170 ms of every launch's robot_description)
-    until something asks for more than substitution_args; then roslaunch is whole."""
-    result = subprocess.run(["python3", "-c", CHECK_LIGHT_ROSLAUNCH,
-                             f"{package_path()}/xacro"],
-                            capture_output=True, text=True, timeout=60, check=False)
+def test_noetics_xacro_language_expands_with_find_resolved_by_rospkg(tmp_path):
+    # the yaml lives where $(find xacro)/../.. reaches: a path that only rospkg's answer
+    # (the package's folder in this workspace) makes right
+    folder = os.path.join(os.path.dirname(os.path.dirname(package_path())), "test_results")
+    os.makedirs(folder, exist_ok=True)
+    key = f"noetic_{os.getpid()}.yaml"
+    with open(os.path.join(folder, key), "w") as stream:
+        stream.write(YAML)
+    robot = tmp_path / "arm.urdf.xacro"
+    robot.write_text(NOETIC.replace("KEY", key))
+    result = subprocess.run([f"{package_path()}/xacro", str(robot)], capture_output=True,
+                            text=True, timeout=60, check=False)
+    os.remove(os.path.join(folder, key))
     assert result.returncode == 0, result.stderr
-    assert result.stdout.split("\n")[:2] == ["light True roslaunch.substitution_args",
-                                              "whole True True"]
+    limits = [dict(re.findall(r'(\w+)="([^"]+)"', attributes))
+              for attributes in re.findall(r"<limit ([^>]*)/>", result.stdout)]
+    assert [(float(limit["lower"]), float(limit["upper"]), float(limit["velocity"]))
+            for limit in limits] == [
+        pytest.approx((-math.pi / 2, math.pi / 2, math.pi)),
+        pytest.approx((-math.pi / 4, math.pi / 4, math.pi))]
+
+
+def test_a_package_that_is_not_there_is_named(tmp_path):
+    robot = tmp_path / "robot.urdf.xacro"
+    robot.write_text('<robot name="r"><link name="base"><visual><geometry>'
+                     '<mesh filename="$(find no_such_package)/base.stl"/></geometry></visual>'
+                     '</link></robot>')
+    result = subprocess.run([f"{package_path()}/xacro", str(robot)], capture_output=True,
+                            text=True, timeout=60, check=False)
+    assert result.returncode != 0
+    assert "no package 'no_such_package' on ROS_PACKAGE_PATH" in result.stderr
