@@ -11,7 +11,13 @@ as Noetic's xacro does through roslaunch. ``$(anon)`` stays unknown to 2.x (no r
 here or seen uses it)."""
 from __future__ import annotations
 
+# xacro 2.1.1's error handling names xml.parsers.expat without importing it: a missing file
+# ended in "AttributeError: module 'xml' has no attribute 'parsers'" and three tracebacks
+import os
+import xml.parsers.expat  # noqa: F401
+
 import rospkg
+import xacro
 import xacro.substitution_args as substitution_args
 
 _packages = None
@@ -31,6 +37,12 @@ def find_package(name: str) -> str:
 
 
 def use_ros1_packages() -> None:
-    """``$(find pkg)`` (and ``find()`` in ``$(eval)``) through rospkg; safe to call again."""
+    """``$(find pkg)`` (and ``find()`` in ``$(eval)``) through rospkg; files named as given
+    in errors, as Noetic's xacro names them; safe to call again."""
     substitution_args._eval_find = find_package
     substitution_args._eval_dict["find"] = find_package
+    # 2.x opens os.path.join(root_dir, name) with root_dir "." and so names a missing
+    # "robots/r.urdf" as "./robots/r.urdf"; "" opens the same file (abspath("") is the
+    # current folder too) and names it as the user typed it
+    if xacro.root_dir == os.curdir:
+        xacro.root_dir = ""

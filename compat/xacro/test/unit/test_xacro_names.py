@@ -89,3 +89,11 @@ def test_a_package_that_is_not_there_is_named(tmp_path):
                             text=True, timeout=60, check=False)
     assert result.returncode != 0
     assert "no package 'no_such_package' on ROS_PACKAGE_PATH" in result.stderr
+
+
+def test_a_missing_relative_file_is_named_as_typed_without_a_traceback(tmp_path):
+    result = subprocess.run([f"{package_path()}/xacro", "robots/nothere.urdf"], cwd=tmp_path,
+                            capture_output=True, text=True, timeout=60, check=False)
+    assert result.returncode != 0
+    assert "No such file or directory: robots/nothere.urdf" in result.stderr
+    assert "Traceback" not in result.stderr
