@@ -31,6 +31,19 @@ direction in the link's frame, projected on the contact plane; without it mu1 ac
 the tyre's rolling direction and mu2 along its axle, which is the only frame a spinning
 wheel keeps.
 
+The normal force a contact's friction may use is capped at LOAD_CAP_SHARE times the tyre's
+static share of the robot's weight. pybullet's normal force of the last step is an
+impulse over the step: a robot dropped from 1 m (launch files spawn at ``-z 1``) lands at
+4.4 m/s with 8-53 kN on a wheel for one step; the next step that load, with the contact
+already opening, gave a friction kick of 8 kN that spun the wheel and shot a 25 kg RB1 up
+to 13 cm sideways and 10 degrees off its heading (43 cm and 5 degrees without its drive
+plugin), depending on where in a step it touched down. Capped, it rests within a few
+millimetres, as a body landing flat does (no torque acts on it). A steady load above the
+cap (a payload twice the robot's weight) would grip less than Coulomb says. A tyre that
+leaves the surface (faster than SEPARATING along the normal: the rebound) gets no friction
+from the load of the step before, which it no longer bears; with the cap alone the robot
+still turned 0.6-0.8 degrees on landing with its wheels free.
+
 A tyre is what :mod:`sim_bridge.robot_body` crowns: a collision cylinder turning about its
 own axis on a continuous or revolute joint; a link whose ``<gazebo>`` block gives
 ``fdir1`` is treated the same way. Other links (bodies, casters, grippers, which must hold
@@ -46,6 +59,12 @@ import pybullet as pb
 
 # the share of one step's slip all of a robot's tyres together may take away (see above)
 STIFFNESS_SHARE = 0.5
+# the most normal force a contact's friction uses, in tyres' static shares of the robot's
+# weight (see above)
+LOAD_CAP_SHARE = 3.0
+# m/s: a tyre leaving the surface at least this fast along the normal has no friction from
+# the last step's load (the contact is opening: a bounce)
+SEPARATING = 0.01
 # below this length a projected direction has vanished (fdir1 along the contact normal)
 DEGENERATE = 1e-6
 
@@ -130,7 +149,7 @@ class TyreFriction:
     """
 
     def __init__(self, client: int, body: int, tyres: Sequence[Tyre], step_size: float,
-                 all_tyres: Set[Tuple[int, int]]):
+                 all_tyres: Set[Tuple[int, int]], gravity: Sequence[float] = (0.0, 0.0, -9.8)):
         self.mass = sum(pb.getDynamicsInfo(body, link, physicsClientId=client)[0]
                         for link in range(-1, pb.getNumJoints(body, physicsClientId=client)))
         self.client, self.body = client, body
@@ -144,12 +163,17 @@ class TyreFriction:
         self._others: Dict[Tuple[int, int], Tuple[bool, float]] = {}
         # (tyre link, other body, other link) -> _Pair: the fast path's per-pair constants
         self._pairs: Dict[Tuple[int, int, int], "_Pair"] = {}
-        self.set_step_size(step_size)
+        self.set_physics(step_size, gravity)
         for link in self.links:  # pybullet's own friction for these links: none
             pb.changeDynamics(body, link, lateralFriction=0.0, physicsClientId=client)
 
-    def set_step_size(self, step_size: float) -> None:
+    def set_physics(self, step_size: float, gravity: Sequence[float]) -> None:
+        """The world's step and gravity: the slip stiffness follows the step, the load cap
+        the weight (none without gravity: no weight to compare a load with)."""
         self.stiffness = stiffness(self.mass, len(self.tyres), step_size)
+        weight = self.mass * math.sqrt(sum(g * g for g in gravity))
+        self.load_cap = LOAD_CAP_SHARE * weight / max(len(self.tyres), 1) if weight > 0 \
+            else math.inf
         self._pairs.clear()  # their caps follow the stiffness
 
     def forget(self) -> None:
@@ -182,6 +206,8 @@ class TyreFriction:
             link, load = contact[3], contact[9]
             if link not in tyres or not load > 0.0:
                 continue
+            if load > self.load_cap:
+                load = self.load_cap
             if states is None:  # computeLinkVelocity 1, computeForwardKinematics 0
                 states = pb.getLinkStates(body, self.links, 1, 0, self.client)
             other, other_link = contact[2], contact[4]
@@ -198,7 +224,9 @@ class TyreFriction:
             if pair.moving:
                 tx, ty, tz = point_velocity(self.client, other, other_link, (px, py, pz))
                 vx, vy, vz = vx - tx, vy - ty, vz - tz
-            along = vx * nx + vy * ny + vz * nz
+            along = vx * nx + vy * ny + vz * nz  # > 0: away from the other body
+            if along > SEPARATING:
+                continue
             sx, sy, sz = vx - along * nx, vy - along * ny, vz - along * nz
             speed = math.sqrt(sx * sx + sy * sy + sz * sz)
             if speed == 0.0:
@@ -252,7 +280,8 @@ class TyreFriction:
     def _reference_one(self, contact, state) -> List[Tuple[int, int, Vector, Vector]]:
         client, body = self.client, self.body
         link, other, other_link = contact[3], contact[2], contact[4]
-        (px, py, pz), (nx, ny, nz), load = contact[5], contact[7], contact[9]
+        (px, py, pz), (nx, ny, nz) = contact[5], contact[7]
+        load = min(contact[9], self.load_cap)
         tyre = self.tyres[link]
         other_is_tyre = (other, other_link) in self.all_tyres
         moving, other_mu = self._other(other, other_link)
@@ -267,7 +296,9 @@ class TyreFriction:
         if moving:
             tx, ty, tz = point_velocity(client, other, other_link, (px, py, pz))
             vx, vy, vz = vx - tx, vy - ty, vz - tz
-        along = vx * nx + vy * ny + vz * nz
+        along = vx * nx + vy * ny + vz * nz  # > 0: away from the other body
+        if along > SEPARATING:
+            return []
         sx, sy, sz = vx - along * nx, vy - along * ny, vz - along * nz
         speed = math.sqrt(sx * sx + sy * sy + sz * sz)
         if speed == 0.0:

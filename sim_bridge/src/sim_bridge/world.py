@@ -262,7 +262,7 @@ class World:
                                      physicsClientId=self.client)
         for model in self.models.values():
             if model.friction is not None:
-                model.friction.set_step_size(self.step_size)
+                model.friction.set_physics(self.step_size, self.gravity)
 
     @property
     def step_ns(self) -> int:
@@ -555,7 +555,7 @@ class World:
                       structure=urdf_structure(description))
         if robot.tyres:
             model.friction = TyreFriction(self.client, robot.id, robot.tyres, self.step_size,
-                                          self._tyres)
+                                          self._tyres, self.gravity)
         context = PluginContext(self.client, robot, name, model.namespace, self.bus,
                                 np.random.default_rng([self.seed, len(self.models)]),
                                 self.step_size, self.gravity, self.cast_rays, tf_prefix)
