@@ -237,15 +237,19 @@ def measure_window(probe: RosProbe, pid: int) -> Dict[str, float]:
 
 def measure_ros(env: Dict[str, str], probe: RosProbe, name: str, real_time_factor: str = "0",
                 world: Optional[str] = None, robots: int = 0,
-                listen: Sequence[str] = (), stop_a_subscriber: bool = False) -> Dict[str, float]:
+                listen: Sequence[str] = (), stop_a_subscriber: bool = False,
+                clock_hz: float = 0) -> Dict[str, float]:
     """One launch of the bench scene: the launch's own robot, or ``robots`` robots in
-    namespaces; measured over a window once the first /scan (or /clock) arrived."""
+    namespaces; measured over a window once the first /scan (or /clock) arrived. ``clock_hz``:
+    /clock at that rate (use_clock_frequency, the fast setting); 0: every step, Gazebo's."""
     probe.reset()
     log = os.path.join(OUTPUT, f"bench_{name}.log")
     arguments = [os.path.join(BENCH, "bench.launch"), f"real_time_factor:={real_time_factor}",
                  f"robot:={'false' if robots else 'true'}"]
     if world:
         arguments.append(f"world:={world}")
+    if clock_hz:
+        arguments += ["use_clock_frequency:=true", f"pub_clock_frequency:={clock_hz:g}"]
     held: List[object] = []
     blocked = None
     started = time.monotonic()
@@ -441,6 +445,8 @@ def main() -> int:
             probe = RosProbe()
             print("bench: max real-time factor with ROS, 1 ms step...", flush=True)
             fast = measure_ros(env, probe, "fast")
+            print("bench: the same, /clock at 250 Hz (use_clock_frequency)...", flush=True)
+            fast_clock = measure_ros(env, probe, "fast_clock_250", clock_hz=250)
             print("bench: the same, 1/240 s step...", flush=True)
             fast_240 = measure_ros(env, probe, "fast_240", world=world_240())
             print("bench: CPU at real time...", flush=True)
@@ -469,6 +475,7 @@ def main() -> int:
     one, eight = crowd[1]["cpu_ms_per_sim_s"], crowd[8]["cpu_ms_per_sim_s"]
     rows = [
         ("max real-time factor, ROS, 1 ms step", fast["rtf"], "{:.1f}"),
+        ("the same, /clock at 250 Hz (use_clock_frequency)", fast_clock["rtf"], "{:.1f}"),
         ("max real-time factor, ROS, 1/240 s step", fast_240["rtf"], "{:.1f}"),
         ("max real-time factor, physics alone, 1 ms", bare, "{:.1f}"),
         ("ROS overhead (bare / ROS)", bare / fast["rtf"], "{:.2f}"),

@@ -99,8 +99,10 @@ class Config:
                  f"of at least {MIN_REAL_TIME_FACTOR:g}")
     seed: int = parameter(0, non_negative,
                           expected="a whole number >= 0 seeding the simulated noise")
+    # 0: every step, as gazebo_ros publishes /clock unless pub_clock_frequency is set
     pub_clock_frequency: float = parameter(
-        250.0, positive, expected="a positive rate in Hz of simulated time for /clock")
+        0.0, non_negative,
+        expected="a rate in Hz of simulated time for /clock >= 0 (0: every step, as Gazebo)")
     model_states_frequency: float = parameter(
         50.0, positive,
         expected="a positive rate in Hz of simulated time for /gazebo/model_states")
