@@ -1,0 +1,203 @@
+"""``<sensor type="camera">`` with ``libgazebo_ros_camera.so``: images of the simulator's scene.
+
+From the sensor, as Gazebo reads it: ``<pose>`` (in the link's frame; the camera looks
+along the sensor frame's +x, +z up), ``<update_rate>`` (Hz of simulated time; 0 every step),
+``<camera>`` ``<horizontal_fov>`` (rad, 1.047), ``<image>`` ``<width>`` (320), ``<height>``
+(240), ``<format>`` (R8G8B8: rgb8; B8G8R8: bgr8; L8: mono8), ``<clip>`` ``<near>`` (0.1)
+``<far>`` (100), ``<noise>`` gaussian mean and stddev on intensities from 0 to 1 (drawn from
+the world's seeded generator). From the plugin, as gazebo_plugins' camera utilities read
+them: ``cameraName`` (empty), ``imageTopicName`` (image_raw), ``cameraInfoTopicName``
+(camera_info), ``frameName`` (/world; the model's tf_prefix applied), ``updateRate`` (0:
+the sensor's), ``hackBaseline`` (0), ``focalLength``, ``Cx``, ``Cy``, ``CxPrime`` (0:
+computed), ``distortionK1`` ``K2`` ``K3`` ``T1`` ``T2`` (0). Topics are
+``<robotNamespace>/<cameraName>/<topic>``.
+
+CameraInfo is Gazebo's: f = width / (2 tan(hfov / 2)) on both axes (square pixels),
+cx = (width + 1) / 2, cy = (height + 1) / 2, P's fourth column -f * hackBaseline, plumb_bob
+distortion with the five coefficients as written (the image itself is not distorted).
+
+The image is rendered on the CPU by pybullet's TinyRenderer from the simulator's own scene
+(the visuals with their Gazebo colours and meshes), from the link's true pose, and only
+while someone subscribes to the image or its camera info, as Gazebo's camera is active only
+then: a 640 x 480 frame costs about 60 ms on the 2-core VM, 320 x 240 about 15.
+Stamps are simulated time.
+"""
+from __future__ import annotations
+
+import math
+from typing import Optional, Tuple
+
+import numpy as np
+import pybullet as pb
+from sensor_msgs.msg import CameraInfo, Image
+
+from sim_bridge.plugins.base import Plugin, PluginError, Rate, stamp
+from sim_bridge.poses import pose6_to_position_quaternion
+
+# Gazebo's image formats sim_bridge renders → (ROS encoding, channels)
+FORMATS = {"R8G8B8": ("rgb8", 3), "RGB_INT8": ("rgb8", 3), "B8G8R8": ("bgr8", 3),
+           "BGR_INT8": ("bgr8", 3), "L8": ("mono8", 1), "L_INT8": ("mono8", 1)}
+# the most pixels one camera may have: a 4K frame; each is rendered on the CPU
+MAX_PIXELS = 3840 * 2160
+
+
+def _number(element, path: str, default: float, sensor: str) -> float:
+    text = element.findtext(path) if element is not None else None
+    if text is None or not text.strip():
+        return default
+    try:
+        value = float(text)
+    except ValueError:
+        raise PluginError(f"sensor '{sensor}': <{path}> '{text}' is not a number") from None
+    if not math.isfinite(value):
+        raise PluginError(f"sensor '{sensor}': <{path}> '{text}' is not a finite number")
+    return value
+
+
+class CameraView:
+    """What a ``<camera>`` element describes: the image's size, the lens and the clip
+    planes; renders the scene of a pybullet client from a pose."""
+
+    def __init__(self, sensor):
+        name = sensor.name
+        camera = sensor.element.find("camera")
+        if camera is None:
+            raise PluginError(f"sensor '{name}' of type {sensor.type} needs a <camera> element")
+        self.width = int(_number(camera, "image/width", 320, name))
+        self.height = int(_number(camera, "image/height", 240, name))
+        if self.width < 1 or self.height < 1 or self.width * self.height > MAX_PIXELS:
+            raise PluginError(f"sensor '{name}': an image of {self.width} x {self.height} "
+                              f"pixels; sim_bridge renders 1 to {MAX_PIXELS} (MAX_PIXELS)")
+        self.hfov = _number(camera, "horizontal_fov", 1.047, name)
+        if not 0 < self.hfov < math.pi:
+            raise PluginError(f"sensor '{name}': <horizontal_fov> {self.hfov} is not between "
+                              "0 and pi radians")
+        self.near = _number(camera, "clip/near", 0.1, name)
+        self.far = _number(camera, "clip/far", 100.0, name)
+        if not 0 < self.near < self.far:
+            raise PluginError(f"sensor '{name}': needs 0 < clip near < clip far (got "
+                              f"{self.near}, {self.far})")
+        image_format = (camera.findtext("image/format") or "R8G8B8").strip()
+        if image_format not in FORMATS:
+            raise PluginError(f"sensor '{name}': image format '{image_format}' is not one "
+                              f"sim_bridge renders ({', '.join(FORMATS)})")
+        self.encoding, self.channels = FORMATS[image_format]
+        noise = camera.find("noise")
+        self.noise_mean = _number(noise, "mean", 0.0, name)
+        self.noise_stddev = _number(noise, "stddev", 0.0, name)
+        # square pixels: the vertical field of view that the horizontal one implies
+        vfov = 2.0 * math.atan(math.tan(self.hfov / 2.0) * self.height / self.width)
+        self.projection = pb.computeProjectionMatrixFOV(math.degrees(vfov),
+                                                        self.width / self.height,
+                                                        self.near, self.far)
+        self.focal_length = self.width / (2.0 * math.tan(self.hfov / 2.0))
+
+    def render(self, client: int, position, orientation) -> Tuple[np.ndarray, np.ndarray]:
+        """(RGB image, height x width x 3 uint8; depth along the optical axis in metres,
+        height x width, +inf where nothing is within the clip planes) seen from the pose."""
+        rotation = np.array(pb.getMatrixFromQuaternion(orientation)).reshape(3, 3)
+        eye = np.asarray(position, dtype=float)
+        view = pb.computeViewMatrix(eye.tolist(), (eye + rotation[:, 0]).tolist(),
+                                    rotation[:, 2].tolist())
+        _, _, rgba, buffer, _ = pb.getCameraImage(
+            self.width, self.height, view, self.projection, renderer=pb.ER_TINY_RENDERER,
+            flags=pb.ER_NO_SEGMENTATION_MASK, physicsClientId=client)
+        rgb = np.asarray(rgba, dtype=np.uint8).reshape(self.height, self.width, 4)[:, :, :3]
+        buffer = np.asarray(buffer, dtype=float).reshape(self.height, self.width)
+        # OpenGL's depth buffer (0 at near, 1 at far) back to metres along the axis
+        with np.errstate(divide="ignore"):
+            depth = self.far * self.near / (self.far - (self.far - self.near) * buffer)
+        depth[buffer >= 1.0] = np.inf
+        return rgb, depth
+
+
+class Camera(Plugin):
+    """gazebo_ros_camera: sensor_msgs/Image and CameraInfo of a ``camera`` sensor."""
+
+    def __init__(self, context, spec, sensor):
+        super().__init__(context, spec)
+        self.link = sensor.link
+        if self.link not in context.robot.link_index:
+            raise PluginError(f"sensor '{sensor.name}' is on link '{self.link}', which the "
+                              "model does not have")
+        pose_text = sensor.element.findtext("pose")
+        pose = tuple(float(v) for v in pose_text.split()) if pose_text else (0.0,) * 6
+        if len(pose) != 6:
+            raise PluginError(f"sensor '{sensor.name}': <pose> needs 6 numbers")
+        self.sensor_position, self.sensor_orientation = pose6_to_position_quaternion(pose)
+        self.view = CameraView(sensor)
+        plugin_rate = self.number("updateRate", 0.0)
+        sensor_rate = _number(sensor.element, "update_rate", 0.0, sensor.name)
+        self.rate = Rate(plugin_rate if plugin_rate > 0 else sensor_rate)
+        self.frame_id = self.frame(self.param("frameName", "/world"))
+        camera_name = (self.param("cameraName", "") or "").strip("/")
+        self.info = self._camera_info()
+        self.image_out = context.bus.publisher(
+            self.topic(self._join(camera_name, self.param("imageTopicName", "image_raw"))),
+            Image, queue_size=2)
+        self.info_out = context.bus.publisher(
+            self.topic(self._join(camera_name,
+                                  self.param("cameraInfoTopicName", "camera_info"))),
+            CameraInfo, queue_size=2)
+
+    @staticmethod
+    def _join(camera_name: str, topic: Optional[str]) -> str:
+        topic = topic or ""
+        if topic.startswith("/") or not camera_name:
+            return topic
+        return f"{camera_name}/{topic}"
+
+    def _camera_info(self) -> CameraInfo:
+        view = self.view
+        focal = self.number("focalLength", 0.0) or view.focal_length
+        cx = self.number("Cx", 0.0) or (view.width + 1.0) / 2.0
+        cy = self.number("Cy", 0.0) or (view.height + 1.0) / 2.0
+        baseline = self.number("hackBaseline", 0.0)
+        info = CameraInfo()
+        info.header.frame_id = self.frame_id
+        info.width, info.height = view.width, view.height
+        info.distortion_model = "plumb_bob"
+        info.D = [self.number(f"distortion{name}", 0.0) for name in ("K1", "K2", "T1", "T2",
+                                                                      "K3")]
+        info.K = [focal, 0.0, cx, 0.0, focal, cy, 0.0, 0.0, 1.0]
+        info.R = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]
+        info.P = [focal, 0.0, cx, -focal * baseline, 0.0, focal, cy, 0.0, 0.0, 0.0, 1.0, 0.0]
+        return info
+
+    def sensor_pose(self):
+        link_position, link_orientation = self.context.robot.link_pose(self.link)
+        return pb.multiplyTransforms(link_position, link_orientation, self.sensor_position,
+                                     self.sensor_orientation)
+
+    def capture(self) -> Tuple[np.ndarray, np.ndarray]:
+        """(the image as published, height x width x channels uint8; depth in metres)."""
+        rgb, depth = self.view.render(self.context.client, *self.sensor_pose())
+        view = self.view
+        if view.noise_stddev > 0 or view.noise_mean != 0:
+            noisy = rgb / 255.0 + self.context.rng.normal(view.noise_mean, view.noise_stddev,
+                                                          rgb.shape)
+            rgb = np.clip(np.round(noisy * 255.0), 0, 255).astype(np.uint8)
+        if view.encoding == "bgr8":
+            rgb = rgb[:, :, ::-1]
+        elif view.encoding == "mono8":  # ITU-R 601 luma, as Ogre's L8
+            rgb = np.round(rgb @ np.array([0.299, 0.587, 0.114]))[:, :, None].astype(np.uint8)
+        return np.ascontiguousarray(rgb), depth
+
+    def active(self) -> bool:
+        return self.context.bus.listened(self.image_out) or \
+            self.context.bus.listened(self.info_out)
+
+    def after_step(self, now_ns: int) -> None:
+        if not self.rate.due(now_ns) or not self.active():
+            return
+        pixels, _ = self.capture()
+        header_stamp = stamp(now_ns)
+        image = Image()
+        image.header.stamp, image.header.frame_id = header_stamp, self.frame_id
+        image.height, image.width = self.view.height, self.view.width
+        image.encoding = self.view.encoding
+        image.step = self.view.width * pixels.shape[2]
+        image.data = pixels.tobytes()
+        self.image_out.publish(image)
+        self.info.header.stamp = header_stamp
+        self.info_out.publish(self.info)

@@ -1,0 +1,130 @@
+"""gazebo_ros_camera on the simulator's scene: what the image shows is where the world has it
+(a red crate ahead, a green one to the left, the floor below), CameraInfo is Gazebo's, and
+nothing is rendered while nobody listens."""
+import math
+
+import numpy as np
+import pytest
+
+from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec
+from world_fixtures import run
+
+WIDTH, HEIGHT, HFOV = 160, 120, 1.2
+CAMERA_HEIGHT = 0.5  # m: the camera link's centre above the floor
+
+
+def robot(plugin="", sensor_extra="", image_format="R8G8B8"):
+    """A box on the floor with a camera 0.1 m ahead of its centre, looking along +x."""
+    return f"""<robot name="cam_bot"><link name="base">
+      <inertial><mass value="5"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0"
+        izz="0.1"/></inertial>
+      <collision><geometry><box size="0.2 0.2 {2 * CAMERA_HEIGHT}"/></geometry></collision>
+    </link>
+    <gazebo reference="base"><sensor type="camera" name="front_camera">
+      <pose>0.1 0 0 0 0 0</pose><update_rate>10</update_rate>{sensor_extra}
+      <camera><horizontal_fov>{HFOV}</horizontal_fov>
+        <image><width>{WIDTH}</width><height>{HEIGHT}</height><format>{image_format}</format>
+        </image><clip><near>0.05</near><far>50</far></clip></camera>
+      <plugin name="camera_controller" filename="libgazebo_ros_camera.so">
+        <cameraName>front</cameraName><frameName>camera_optical</frameName>{plugin}
+      </plugin></sensor></gazebo></robot>"""
+
+
+def crate(name, x, y, rgba):
+    box = dict(size=(0.5, 0.5, 1.0), rgba=rgba)
+    return ModelSpec(name, True, pose=(x, y, 0.5, 0, 0, 0), links=[LinkSpec(
+        "link", collisions=[ShapeSpec("box", **box)], visuals=[ShapeSpec("box", **box)])])
+
+
+@pytest.fixture
+def scene(world):
+    world.add_sdf_model(crate("red", 3.0, 0.0, (1, 0, 0, 1)))
+    world.add_sdf_model(crate("green", 3.0, 1.5, (0, 1, 0, 1)))
+    return world
+
+
+def camera_of(world):
+    (camera,) = [p for p in world.model("cam_bot").plugins if type(p).__name__ == "Camera"]
+    return camera
+
+
+def test_the_image_shows_the_world_where_it_is(scene, bus):
+    scene.spawn_urdf("cam_bot", robot(), (0, 0, CAMERA_HEIGHT))
+    run(scene, 0.15)
+    image = bus.last("/front/image_raw")
+    assert (image.width, image.height, image.encoding) == (WIDTH, HEIGHT, "rgb8")
+    assert image.header.frame_id == "camera_optical"
+    assert image.header.stamp.to_sec() == pytest.approx(0.1, abs=0.002)  # simulated time
+    pixels = np.frombuffer(image.data, np.uint8).reshape(HEIGHT, WIDTH, 3).astype(int)
+    red = (pixels[:, :, 0] > 150) & (pixels[:, :, 1] < 80) & (pixels[:, :, 2] < 80)
+    green = (pixels[:, :, 1] > 150) & (pixels[:, :, 0] < 80) & (pixels[:, :, 2] < 80)
+    focal = WIDTH / (2 * math.tan(HFOV / 2))
+    # the red crate's face (x 2.75 m, 2.65 ahead of the camera) spans y -0.25..0.25 m
+    columns = np.nonzero(red.any(axis=0))[0]
+    half_width = 0.25 / 2.65 * focal
+    assert columns.min() == pytest.approx(WIDTH / 2 - half_width, abs=2)
+    assert columns.max() == pytest.approx(WIDTH / 2 + half_width, abs=2)
+    # the green crate is on the left (+y) of the image; nothing green on the right half
+    assert green[:, : WIDTH // 2].sum() > 50 and green[:, WIDTH // 2:].sum() == 0
+    # the crate's top edge, 0.5 m above the camera: no red above it
+    assert not red[: HEIGHT // 2 - int(0.5 / 2.65 * focal) - 2].any()
+
+
+def test_depth_is_the_distance_along_the_axis(scene):
+    scene.spawn_urdf("cam_bot", robot(), (0, 0, CAMERA_HEIGHT))
+    _, depth = camera_of(scene).capture()
+    assert depth[HEIGHT // 2, WIDTH // 2] == pytest.approx(2.65, abs=0.02)
+
+
+def test_camera_info_is_gazebos(world, bus):
+    world.spawn_urdf("cam_bot", robot("<hackBaseline>0.07</hackBaseline>"
+                                      "<distortionK1>0.1</distortionK1>"),
+                     (0, 0, CAMERA_HEIGHT))
+    run(world, 0.15)
+    info = bus.last("/front/camera_info")
+    focal = WIDTH / (2 * math.tan(HFOV / 2))
+    assert info.K == pytest.approx([focal, 0, (WIDTH + 1) / 2, 0, focal, (HEIGHT + 1) / 2,
+                                    0, 0, 1])
+    assert info.P[3] == pytest.approx(-focal * 0.07)
+    assert info.distortion_model == "plumb_bob" and info.D[0] == pytest.approx(0.1)
+    assert info.header.stamp == bus.last("/front/image_raw").header.stamp
+
+
+def test_nothing_is_rendered_while_nobody_listens(world, bus):
+    bus.unheard.update({"/front/image_raw", "/front/camera_info"})
+    world.spawn_urdf("cam_bot", robot(), (0, 0, CAMERA_HEIGHT))
+    run(world, 0.3)
+    assert not bus.published.get("/front/image_raw")
+
+
+def test_mono_and_bgr_images_and_the_sensor_rate(scene, bus):
+    scene.spawn_urdf("cam_bot", robot(image_format="B8G8R8"), (0, 0, CAMERA_HEIGHT))
+    run(scene, 0.35)
+    images = bus.published["/front/image_raw"]
+    assert len(images) == 4  # 10 Hz: at 0, 0.1, 0.2 and 0.3 s
+    image = images[-1]
+    pixels = np.frombuffer(image.data, np.uint8).reshape(HEIGHT, WIDTH, 3)
+    assert image.encoding == "bgr8" and pixels[HEIGHT // 2, WIDTH // 2, 2] > 150  # red last
+
+
+def test_noise_is_drawn_around_the_true_intensity(scene):
+    scene.spawn_urdf("cam_bot", robot(sensor_extra=""), (0, 0, CAMERA_HEIGHT))
+    clean, _ = camera_of(scene).capture()
+    camera_of(scene).view.noise_stddev = 0.05
+    noisy, _ = camera_of(scene).capture()
+    difference = noisy.astype(float) - clean.astype(float)
+    inside = (clean > 20) & (clean < 235)  # away from clipping at 0 and 255
+    assert difference[inside].std() == pytest.approx(0.05 * 255, rel=0.1)
+    assert abs(difference[inside].mean()) < 1.0
+
+
+@pytest.mark.parametrize("camera, words", [
+    ("<horizontal_fov>4</horizontal_fov>", "<horizontal_fov> 4.0 is not between 0 and pi"),
+    ("<image><format>BAYER_RGGB8</format></image>", "image format 'BAYER_RGGB8'"),
+    ("<image><width>100000</width><height>100000</height></image>", "MAX_PIXELS"),
+])
+def test_a_camera_that_cannot_render_is_left_out_naming_why(world, bus, camera, words):
+    xml = robot().replace(robot().split("<camera>")[1].split("</camera>")[0], camera)
+    world.spawn_urdf("cam_bot", xml, (0, 0, CAMERA_HEIGHT))
+    assert "cam_bot" in world.models
+    assert any(words in w and "not loaded" in w for w in bus.warnings), bus.warnings
