@@ -128,3 +128,48 @@ def test_a_camera_that_cannot_render_is_left_out_naming_why(world, bus, camera, 
     world.spawn_urdf("cam_bot", xml, (0, 0, CAMERA_HEIGHT))
     assert "cam_bot" in world.models
     assert any(words in w and "not loaded" in w for w in bus.warnings), bus.warnings
+
+
+def kinect(cutoff=""):
+    """The camera robot with a depth sensor and the openni plugin instead."""
+    return robot(plugin=cutoff).replace('type="camera"', 'type="depth"').replace(
+        "libgazebo_ros_camera.so", "libgazebo_ros_openni_kinect.so").replace(
+        "<cameraName>front</cameraName>", "<cameraName>kinect</cameraName>")
+
+
+def test_a_depth_camera_measures_the_world_in_its_optical_frame(scene, bus):
+    scene.spawn_urdf("cam_bot", kinect(), (0, 0, CAMERA_HEIGHT))
+    run(scene, 0.15)
+    for topic in ("ir/image_raw", "ir/camera_info", "depth/camera_info"):
+        assert bus.last(f"/kinect/{topic}").header.frame_id == "camera_optical"
+    depth_message = bus.last("/kinect/depth/image_raw")
+    assert depth_message.encoding == "32FC1"
+    depth = np.frombuffer(depth_message.data, np.float32).reshape(HEIGHT, WIDTH)
+    assert depth[HEIGHT // 2, WIDTH // 2] == pytest.approx(2.65, abs=0.02)
+    assert np.isnan(depth[0, WIDTH // 2])  # nothing within 5 m above the crates
+    cloud = bus.last("/kinect/points")
+    assert (cloud.height, cloud.width, cloud.point_step) == (HEIGHT, WIDTH, 32)
+    points = np.frombuffer(cloud.data, np.dtype({"names": ["x", "y", "z", "rgb"],
+                                                 "formats": ["<f4"] * 4,
+                                                 "offsets": [0, 4, 8, 16], "itemsize": 32}))
+    points = points.reshape(HEIGHT, WIDTH)
+    colour = points["rgb"].view(np.uint32)
+    r, g, b = colour >> 16 & 255, colour >> 8 & 255, colour & 255
+    red = (r > 150) & (g < 80) & (b < 80)
+    green = (g > 150) & (r < 80) & (b < 80)
+    # the crates' faces 2.65 m ahead: the red one at optical x -0.25..0.25 m, the green one
+    # (world y 1.25..1.75 m, on the camera's left) at optical x -1.75..-1.25 m; y down
+    assert points["z"][red] == pytest.approx(2.65, abs=0.03)
+    assert -0.27 < points["x"][red].min() < -0.2 and 0.2 < points["x"][red].max() < 0.27
+    face = green & (np.abs(points["z"] - 2.65) < 0.03)
+    assert -1.77 < points["x"][face].min() < -1.7 and -1.3 < points["x"][face].max() < -1.23
+    assert -0.52 < points["y"][red].min() < -0.45 and 0.45 < points["y"][red].max() < 0.52
+
+
+def test_depth_beyond_the_cutoff_is_nan(scene, bus):
+    # the nearest thing seen is the floor at the bottom row, 0.97 m along the axis
+    scene.spawn_urdf("cam_bot", kinect("<pointCloudCutoffMax>0.9</pointCloudCutoffMax>"),
+                     (0, 0, CAMERA_HEIGHT))
+    run(scene, 0.15)
+    depth = np.frombuffer(bus.last("/kinect/depth/image_raw").data, np.float32)
+    assert np.isnan(depth).all()

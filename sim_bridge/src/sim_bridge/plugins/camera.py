@@ -1,4 +1,6 @@
-"""``<sensor type="camera">`` with ``libgazebo_ros_camera.so``: images of the simulator's scene.
+"""``<sensor type="camera">`` with ``libgazebo_ros_camera.so``, ``<sensor type="depth">`` with
+``libgazebo_ros_openni_kinect.so`` or ``libgazebo_ros_depth_camera.so``: images of the
+simulator's scene (:class:`DepthCamera` says what the depth cameras add).
 
 From the sensor, as Gazebo reads it: ``<pose>`` (in the link's frame; the camera looks
 along the sensor frame's +x, +z up), ``<update_rate>`` (Hz of simulated time; 0 every step),
@@ -29,7 +31,7 @@ from typing import Optional, Tuple
 
 import numpy as np
 import pybullet as pb
-from sensor_msgs.msg import CameraInfo, Image
+from sensor_msgs.msg import CameraInfo, Image, PointCloud2, PointField
 
 from sim_bridge.plugins.base import Plugin, PluginError, Rate, stamp
 from sim_bridge.poses import pose6_to_position_quaternion
@@ -39,6 +41,10 @@ FORMATS = {"R8G8B8": ("rgb8", 3), "RGB_INT8": ("rgb8", 3), "B8G8R8": ("bgr8", 3)
            "BGR_INT8": ("bgr8", 3), "L8": ("mono8", 1), "L_INT8": ("mono8", 1)}
 # the most pixels one camera may have: a 4K frame; each is rendered on the CPU
 MAX_PIXELS = 3840 * 2160
+# a point of PCL's PointXYZRGB as gazebo_plugins lays it out: x y z, 4 bytes free, rgb
+POINT_XYZRGB = np.dtype({"names": ["x", "y", "z", "rgb"],
+                         "formats": [np.float32] * 4, "offsets": [0, 4, 8, 16],
+                         "itemsize": 32})
 
 
 def _number(element, path: str, default: float, sensor: str) -> float:
@@ -114,6 +120,10 @@ class CameraView:
 class Camera(Plugin):
     """gazebo_ros_camera: sensor_msgs/Image and CameraInfo of a ``camera`` sensor."""
 
+    # the topics' defaults (the depth cameras' differ)
+    IMAGE_TOPIC = "image_raw"
+    INFO_TOPIC = "camera_info"
+
     def __init__(self, context, spec, sensor):
         super().__init__(context, spec)
         self.link = sensor.link
@@ -130,15 +140,16 @@ class Camera(Plugin):
         sensor_rate = _number(sensor.element, "update_rate", 0.0, sensor.name)
         self.rate = Rate(plugin_rate if plugin_rate > 0 else sensor_rate)
         self.frame_id = self.frame(self.param("frameName", "/world"))
-        camera_name = (self.param("cameraName", "") or "").strip("/")
+        self.camera_name = (self.param("cameraName", "") or "").strip("/")
         self.info = self._camera_info()
-        self.image_out = context.bus.publisher(
-            self.topic(self._join(camera_name, self.param("imageTopicName", "image_raw"))),
-            Image, queue_size=2)
-        self.info_out = context.bus.publisher(
-            self.topic(self._join(camera_name,
-                                  self.param("cameraInfoTopicName", "camera_info"))),
-            CameraInfo, queue_size=2)
+        self.image_out = self.publisher("imageTopicName", self.IMAGE_TOPIC, Image)
+        self.info_out = self.publisher("cameraInfoTopicName", self.INFO_TOPIC, CameraInfo)
+
+    def publisher(self, tag: str, default: str, msg_class):
+        """A publisher on the topic the parameter ``tag`` names, under the camera's name."""
+        return self.context.bus.publisher(
+            self.topic(self._join(self.camera_name, self.param(tag, default))), msg_class,
+            queue_size=2)
 
     @staticmethod
     def _join(camera_name: str, topic: Optional[str]) -> str:
@@ -190,14 +201,87 @@ class Camera(Plugin):
     def after_step(self, now_ns: int) -> None:
         if not self.rate.due(now_ns) or not self.active():
             return
-        pixels, _ = self.capture()
-        header_stamp = stamp(now_ns)
-        image = Image()
-        image.header.stamp, image.header.frame_id = header_stamp, self.frame_id
-        image.height, image.width = self.view.height, self.view.width
-        image.encoding = self.view.encoding
-        image.step = self.view.width * pixels.shape[2]
-        image.data = pixels.tobytes()
-        self.image_out.publish(image)
+        pixels, depth = self.capture()
+        self.publish(stamp(now_ns), pixels, depth)
+
+    def publish(self, header_stamp, pixels: np.ndarray, depth: np.ndarray) -> None:
+        self.image_out.publish(self.image(header_stamp, pixels, self.view.encoding))
         self.info.header.stamp = header_stamp
         self.info_out.publish(self.info)
+
+    def image(self, header_stamp, pixels: np.ndarray, encoding: str) -> Image:
+        image = Image()
+        image.header.stamp, image.header.frame_id = header_stamp, self.frame_id
+        image.height, image.width = pixels.shape[:2]
+        image.encoding = encoding
+        image.step = pixels.shape[1] * pixels.shape[2] * pixels.dtype.itemsize
+        image.data = pixels.tobytes()
+        return image
+
+
+class DepthCamera(Camera):
+    """gazebo_ros_openni_kinect and gazebo_ros_depth_camera on a ``depth`` sensor: the
+    camera's image and info (on ``ir/image_raw`` and ``ir/camera_info`` by default, as
+    those plugins), the depth image (``depthImageTopicName``, depth/image_raw: 32FC1,
+    metres along the optical axis, NaN outside ``pointCloudCutoff`` (0.4 m) to
+    ``pointCloudCutoffMax`` (5 m)) with its info (``depthImageCameraInfoTopicName``,
+    depth/camera_info), and the organised point cloud (``pointCloudTopicName``, points:
+    x y z rgb in the optical frame, x right, y down, z ahead; NaN where the depth image
+    has none), as gazebo_plugins fills them (a pixel's ray through (width - 1) / 2)."""
+
+    IMAGE_TOPIC = "ir/image_raw"
+    INFO_TOPIC = "ir/camera_info"
+
+    def __init__(self, context, spec, sensor):
+        super().__init__(context, spec, sensor)
+        self.cutoff = self.number("pointCloudCutoff", 0.4)
+        self.cutoff_max = self.number("pointCloudCutoffMax", 5.0)
+        self.depth_out = self.publisher("depthImageTopicName", "depth/image_raw", Image)
+        self.depth_info_out = self.publisher("depthImageCameraInfoTopicName",
+                                             "depth/camera_info", CameraInfo)
+        self.points_out = self.publisher("pointCloudTopicName", "points", PointCloud2)
+        view = self.view
+        # each pixel's ray, per metre of depth, in the optical frame (Gazebo's angles)
+        columns = (np.arange(view.width) - 0.5 * (view.width - 1)) / view.focal_length
+        rows = (np.arange(view.height) - 0.5 * (view.height - 1)) / view.focal_length
+        self.ray_x, self.ray_y = np.meshgrid(columns, rows)
+
+    def active(self) -> bool:
+        listened = self.context.bus.listened
+        return super().active() or any(listened(out) for out in (
+            self.depth_out, self.depth_info_out, self.points_out))
+
+    def depth_image(self, depth: np.ndarray) -> np.ndarray:
+        """32-bit metres, NaN outside the cutoffs."""
+        inside = (depth > self.cutoff) & (depth < self.cutoff_max)
+        return np.where(inside, depth, np.nan).astype(np.float32)
+
+    def points(self, header_stamp, pixels: np.ndarray, depth: np.ndarray) -> PointCloud2:
+        metres = self.depth_image(depth)
+        cloud = np.zeros((self.view.height, self.view.width), dtype=POINT_XYZRGB)
+        cloud["x"], cloud["y"], cloud["z"] = self.ray_x * metres, self.ray_y * metres, metres
+        rgb = pixels if pixels.shape[2] == 3 else np.repeat(pixels, 3, axis=2)
+        if self.view.encoding == "bgr8":
+            rgb = rgb[:, :, ::-1]
+        packed = (rgb[:, :, 0].astype(np.uint32) << 16) | (rgb[:, :, 1].astype(np.uint32) << 8) \
+            | rgb[:, :, 2].astype(np.uint32)
+        cloud["rgb"] = packed.view(np.float32)
+        message = PointCloud2()
+        message.header.stamp, message.header.frame_id = header_stamp, self.frame_id
+        message.height, message.width = cloud.shape
+        message.fields = [PointField(name, offset, PointField.FLOAT32, 1)
+                          for name, offset in (("x", 0), ("y", 4), ("z", 8), ("rgb", 16))]
+        message.is_bigendian = False
+        message.point_step = POINT_XYZRGB.itemsize
+        message.row_step = POINT_XYZRGB.itemsize * cloud.shape[1]
+        message.is_dense = False
+        message.data = cloud.tobytes()
+        return message
+
+    def publish(self, header_stamp, pixels: np.ndarray, depth: np.ndarray) -> None:
+        super().publish(header_stamp, pixels, depth)
+        self.depth_out.publish(self.image(header_stamp, self.depth_image(depth)[:, :, None],
+                                          "32FC1"))
+        self.depth_info_out.publish(self.info)
+        if self.context.bus.listened(self.points_out):
+            self.points_out.publish(self.points(header_stamp, pixels, depth))
