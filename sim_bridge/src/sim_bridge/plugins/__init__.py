@@ -27,6 +27,7 @@ from sim_bridge.plugins.joint_state_publisher import JointStatePublisher
 from sim_bridge.plugins.laser import Laser
 from sim_bridge.plugins.p3d import P3D
 from sim_bridge.plugins.planar_move import PlanarMove
+from sim_bridge.plugins.range import Range
 from sim_bridge.plugins.skid_steer import SkidSteer
 from sim_bridge.ros_control import RosControl
 
@@ -47,6 +48,7 @@ SENSOR_PLUGINS = {
     "libgazebo_ros_laser.so": (Laser, ("ray", "gpu_ray")),
     "libgazebo_ros_gpu_laser.so": (Laser, ("ray", "gpu_ray")),
     "libgazebo_ros_imu_sensor.so": (ImuSensor, ("imu",)),
+    "libgazebo_ros_range.so": (Range, ("ray", "gpu_ray")),
     "libgazebo_ros_camera.so": (Camera, ("camera",)),
     "libgazebo_ros_openni_kinect.so": (DepthCamera, ("depth",)),
     "libgazebo_ros_depth_camera.so": (DepthCamera, ("depth",)),
