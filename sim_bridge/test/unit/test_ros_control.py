@@ -7,7 +7,7 @@ import yaml
 from control_msgs.msg import FollowJointTrajectoryGoal, FollowJointTrajectoryResult
 from controller_manager_msgs.srv import (ListControllersRequest, LoadControllerRequest,
                                          SwitchControllerRequest, UnloadControllerRequest)
-from std_msgs.msg import Float64
+from std_msgs.msg import Float64, Float64MultiArray
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
 import genpy
@@ -151,6 +151,32 @@ def test_joint_position_controller_moves_the_prismatic_finger():
     assert angles(model, "finger_joint")[0] == pytest.approx(0.02, abs=1e-3)
     bus.subscriptions["/arm_bot/finger_controller/command"](Float64(math.inf))
     assert any("finite" in w for w in bus.warnings)
+    world.close()
+
+
+def test_group_position_controller_moves_its_joints_and_names_a_wrong_command():
+    world, bus, model = arm()
+    start(bus, "arm_group_controller")
+    command = bus.subscriptions["/arm_bot/arm_group_controller/command"]
+    command(Float64MultiArray(data=[0.6, -0.3]))
+    run(world, 1.5)
+    assert angles(model, "pan", "lift") == pytest.approx([0.6, -0.3], abs=0.01)
+    command(Float64MultiArray(data=[1.0]))  # one value for two joints: not executed
+    command(Float64MultiArray(data=[1.0, math.nan]))
+    run(world, 0.5)
+    assert angles(model, "pan", "lift") == pytest.approx([0.6, -0.3], abs=0.01)
+    assert any("1 values for 2 joints (pan, lift); not executing" in w for w in bus.warnings)
+    assert any("finite" in w for w in bus.warnings)
+    world.close()
+
+
+def test_effort_group_position_controller_reaches_its_positions_through_pid():
+    world, bus, model = arm("EffortJointInterface")
+    start(bus, "effort_group_controller")
+    bus.subscriptions["/arm_bot/effort_group_controller/command"](
+        Float64MultiArray(data=[0.5, 0.3]))
+    run(world, 4.0)
+    assert angles(model, "pan", "lift") == pytest.approx([0.5, 0.3], abs=0.02)
     world.close()
 
 

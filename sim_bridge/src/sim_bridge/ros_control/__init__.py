@@ -28,6 +28,10 @@ from sim_bridge.ros_control.diff_drive_controller import DiffDriveController
 from sim_bridge.ros_control.hardware import RobotHardware
 from sim_bridge.ros_control.joint_controllers import (EffortController, EffortPositionController,
                                                       EffortVelocityController,
+                                                      GroupEffortController,
+                                                      GroupEffortPositionController,
+                                                      GroupPositionController,
+                                                      GroupVelocityController,
                                                       PositionController, VelocityController)
 from sim_bridge.ros_control.joint_state_controller import JointStateController
 from sim_bridge.ros_control.trajectory_controller import (EffortTrajectoryController,
@@ -44,6 +48,10 @@ CONTROLLER_TYPES = {
     "effort_controllers/JointEffortController": EffortController,
     "effort_controllers/JointPositionController": EffortPositionController,
     "effort_controllers/JointVelocityController": EffortVelocityController,
+    "position_controllers/JointGroupPositionController": GroupPositionController,
+    "velocity_controllers/JointGroupVelocityController": GroupVelocityController,
+    "effort_controllers/JointGroupEffortController": GroupEffortController,
+    "effort_controllers/JointGroupPositionController": GroupEffortPositionController,
     "diff_drive_controller/DiffDriveController": DiffDriveController,
 }
 INTERFACE_NAMES = {"position": "hardware_interface/PositionJointInterface",
