@@ -25,6 +25,7 @@ from sim_bridge.plugins.hector_imu import HectorImu
 from sim_bridge.plugins.imu import ImuSensor
 from sim_bridge.plugins.joint_state_publisher import JointStatePublisher
 from sim_bridge.plugins.laser import Laser
+from sim_bridge.plugins.mimic_joint import MimicJoint
 from sim_bridge.plugins.p3d import P3D
 from sim_bridge.plugins.planar_move import PlanarMove
 from sim_bridge.plugins.range import Range
@@ -41,6 +42,8 @@ MODEL_PLUGINS = {
     "libgazebo_ros_imu.so": GazeboRosImu,
     "libhector_gazebo_ros_imu.so": HectorImu,
     "libhector_gazebo_ros_gps.so": HectorGps,
+    "libroboticsgroup_upatras_gazebo_mimic_joint_plugin.so": MimicJoint,
+    "libroboticsgroup_gazebo_mimic_joint_plugin.so": MimicJoint,
 }
 # model plugins whose <bodyName> defaults to the model's canonical link when absent
 BODY_DEFAULTS_TO_CANONICAL = ("libhector_gazebo_ros_imu.so", "libhector_gazebo_ros_gps.so")
