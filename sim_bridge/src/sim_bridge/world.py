@@ -558,7 +558,8 @@ class World:
                                           self._tyres, self.gravity)
         context = PluginContext(self.client, robot, name, model.namespace, self.bus,
                                 np.random.default_rng([self.seed, len(self.models)]),
-                                self.step_size, self.gravity, self.cast_rays, tf_prefix)
+                                self.step_size, self.gravity, self.cast_rays, tf_prefix,
+                                self.model_of_body)
         try:
             model.plugins = create_plugins(context, tags)
         except Exception:
@@ -605,6 +606,13 @@ class World:
         return (float(lifted[0]), float(lifted[1]), float(lifted[2]))
 
     # --- requests ------------------------------------------------------------------------
+    def model_of_body(self, body: int) -> Optional[str]:
+        """The name of the model whose pybullet body ``body`` is, or None."""
+        for name, model in self.models.items():
+            if model.body == body:
+                return name
+        return None
+
     def model(self, name: str) -> Model:
         try:
             return self.models[name]

@@ -17,6 +17,7 @@ from typing import Callable, List, Set
 
 from sim_bridge.gazebo_tags import GazeboTags, PluginSpec
 from sim_bridge.plugins.base import Plugin, PluginContext, PluginError, TrackingBus
+from sim_bridge.plugins.bumper import Bumper
 from sim_bridge.plugins.camera import Camera, DepthCamera
 from sim_bridge.plugins.diff_drive import DiffDrive
 from sim_bridge.plugins.gazebo_ros_imu import GazeboRosImu
@@ -53,6 +54,7 @@ SENSOR_PLUGINS = {
     "libgazebo_ros_imu_sensor.so": (ImuSensor, ("imu",)),
     "libgazebo_ros_range.so": (Range, ("ray", "gpu_ray")),
     "libgazebo_ros_camera.so": (Camera, ("camera",)),
+    "libgazebo_ros_bumper.so": (Bumper, ("contact",)),
     "libgazebo_ros_openni_kinect.so": (DepthCamera, ("depth",)),
     "libgazebo_ros_depth_camera.so": (DepthCamera, ("depth",)),
 }

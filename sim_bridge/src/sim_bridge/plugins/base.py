@@ -136,6 +136,8 @@ class PluginContext:
     cast_rays: Optional[Callable[..., np.ndarray]] = None
     # prefix of the frames the plugins name (the namespace's tf_prefix parameter), "" none
     tf_prefix: str = ""
+    # the name of the model a pybullet body is (for contacts' names), or None
+    model_of_body: Callable[[int], Optional[str]] = lambda body: None
 
 
 def resolve_topic(namespace: str, topic: str) -> str:
