@@ -39,10 +39,10 @@ already opening, gave a friction kick of 8 kN that spun the wheel and shot a 25 
 to 13 cm sideways and 10 degrees off its heading (43 cm and 5 degrees without its drive
 plugin), depending on where in a step it touched down. Capped, it rests within a few
 millimetres, as a body landing flat does (no torque acts on it). A steady load above the
-cap (a payload twice the robot's weight) would grip less than Coulomb says. A tyre that
-leaves the surface (faster than SEPARATING along the normal: the rebound) gets no friction
-from the load of the step before, which it no longer bears; with the cap alone the robot
-still turned 0.6-0.8 degrees on landing with its wheels free.
+cap (a payload twice the robot's weight) would grip less than Coulomb says. (A rule that
+took a tyre leaving the surface as having no load brought a free-wheeled landing from 0.8
+to 0.1 degrees of heading, and stopped the flipping robot of diff_drive from flipping: its
+wheels hop as it reverses.)
 
 A tyre is what :mod:`sim_bridge.robot_body` crowns: a collision cylinder turning about its
 own axis on a continuous or revolute joint; a link whose ``<gazebo>`` block gives
@@ -62,9 +62,6 @@ STIFFNESS_SHARE = 0.5
 # the most normal force a contact's friction uses, in tyres' static shares of the robot's
 # weight (see above)
 LOAD_CAP_SHARE = 3.0
-# m/s: a tyre leaving the surface at least this fast along the normal has no friction from
-# the last step's load (the contact is opening: a bounce)
-SEPARATING = 0.01
 # below this length a projected direction has vanished (fdir1 along the contact normal)
 DEGENERATE = 1e-6
 
@@ -224,9 +221,7 @@ class TyreFriction:
             if pair.moving:
                 tx, ty, tz = point_velocity(self.client, other, other_link, (px, py, pz))
                 vx, vy, vz = vx - tx, vy - ty, vz - tz
-            along = vx * nx + vy * ny + vz * nz  # > 0: away from the other body
-            if along > SEPARATING:
-                continue
+            along = vx * nx + vy * ny + vz * nz
             sx, sy, sz = vx - along * nx, vy - along * ny, vz - along * nz
             speed = math.sqrt(sx * sx + sy * sy + sz * sz)
             if speed == 0.0:
@@ -296,9 +291,7 @@ class TyreFriction:
         if moving:
             tx, ty, tz = point_velocity(client, other, other_link, (px, py, pz))
             vx, vy, vz = vx - tx, vy - ty, vz - tz
-        along = vx * nx + vy * ny + vz * nz  # > 0: away from the other body
-        if along > SEPARATING:
-            return []
+        along = vx * nx + vy * ny + vz * nz
         sx, sy, sz = vx - along * nx, vy - along * ny, vz - along * nz
         speed = math.sqrt(sx * sx + sy * sy + sz * sz)
         if speed == 0.0:

