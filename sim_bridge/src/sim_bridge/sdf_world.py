@@ -43,6 +43,7 @@ from typing import Callable, Dict, List, Optional, Sequence, Tuple
 from sim_bridge.materials import gazebo_colour
 from sim_bridge.mesh_files import MeshError, bounds, collision_fallback, loadable_file
 from sim_bridge.poses import compose6
+from sim_bridge.sdf_articulated import ArticulationError, to_urdf
 # urdf_tools' own checks and limits, so that SDF and URDF are refused alike and in the same
 # words (its UrdfError is turned into SdfError by _checked)
 from urdf_tools.model import MAX_DESCRIPTION_BYTES, UrdfError
@@ -67,8 +68,9 @@ class SdfError(ValueError):
 
 
 class UnsupportedModel(SdfError):
-    """A well-formed model that sim_bridge cannot build (an articulated SDF model). In a
-    world it is left out with one warning and the world runs; spawn_sdf_model refuses it."""
+    """A well-formed model that sim_bridge cannot build (an articulated SDF model with a
+    joint type it does not build, or links no joint connects). In a world it is left out
+    with one warning and the world runs; spawn_sdf_model refuses it."""
 
 
 def _checked(check, values, what: str, source: str) -> Tuple[float, ...]:
@@ -165,6 +167,10 @@ class ModelSpec:
     pose: Pose6 = ZERO_POSE
     links: List[LinkSpec] = field(default_factory=list)
     source: str = ""
+    # an articulated model: the URDF robot it is built as (sim_bridge.sdf_articulated), and
+    # its root link's pose in the model's frame ("" and None for a single body)
+    urdf: str = ""
+    urdf_root_pose: Optional[Pose6] = None
 
 
 @dataclass
@@ -429,9 +435,11 @@ def _model(element: ET.Element, source: str, model_dir: str, warnings: _Warnings
         if inner is not None:
             model.links.extend(_offset_links(inner))
     if element.find("joint") is not None and not static:
-        raise UnsupportedModel(
-            f"{source}: model '{name}' has joints; sim_bridge builds articulated models from "
-            "URDF (spawn_model -urdf), SDF models only as single bodies")
+        try:
+            model.urdf, model.urdf_root_pose = to_urdf(element, model)
+        except ArticulationError as error:
+            raise UnsupportedModel(f"{source}: model '{name}' cannot be built: {error}") \
+                from None
     return model
 
 

@@ -350,6 +350,10 @@ class World:
                                          (0, 0, 0))
             roll_pitch_yaw = pb.getEulerFromQuaternion(list(orientation))
             spec.pose = (*position, *roll_pitch_yaw)
+        if spec.urdf:  # articulated: built as the URDF robot it converts to, as Gazebo would
+            root = compose6(spec.pose, spec.urdf_root_pose)
+            return self.spawn_urdf(spec.name, spec.urdf, *pose6_to_position_quaternion(root),
+                                   namespace=namespace, source=spec.source)
         pos, orn = pose6_to_position_quaternion(spec.pose)
         model = Model(spec.name, "static" if spec.static else "body", pos, orn, namespace, spec,
                       position=pos, orientation=orn)

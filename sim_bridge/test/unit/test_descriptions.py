@@ -86,18 +86,27 @@ JOINTED_WORLD = """<?xml version="1.0"?>
 </world></sdf>"""
 
 
-def test_a_jointed_sdf_model_is_left_out_of_its_world_with_one_warning(tmp_path):
+def test_a_jointed_sdf_model_in_a_world_is_built_as_a_robot(tmp_path):
     # students add Gazebo's robots to their worlds; before, the whole world refused to load
     path = tmp_path / "ddrive.world"
     path.write_text(JOINTED_WORLD)
     warnings = []
     world = load_world(str(path), warnings.append)
+    assert [m.name for m in world.models] == ["crate", "r2"]
+    assert "<joint name=\"axle\" type=\"continuous\">" in world.models[1].urdf
+    assert not warnings
+
+
+def test_a_model_with_a_joint_sim_bridge_does_not_build_is_left_out_naming_it(tmp_path):
+    path = tmp_path / "ball.world"
+    path.write_text(JOINTED_WORLD.replace('type="revolute"', 'type="ball"'))
+    warnings = []
+    world = load_world(str(path), warnings.append)
     assert [m.name for m in world.models] == ["crate"]
     (warning,) = warnings
-    assert "model 'r2' has joints" in warning and "left out of the world" in warning
-
-
-def test_spawning_a_jointed_sdf_model_is_refused_naming_it():
-    text = JOINTED_WORLD.split("</model>", 1)[1].rsplit("</world>", 1)[0]
-    with pytest.raises(SdfError, match="model 'r2' has joints"):
-        parse_model(f"<sdf version='1.6'>{text}</sdf>", "spawn request")
+    assert "model 'r2' cannot be built: joint 'axle' is of type 'ball'" in warning
+    assert "left out of the world" in warning
+    ball = JOINTED_WORLD.replace('type="revolute"', 'type="ball"')
+    model = ball.split("</model>", 1)[1].rsplit("</world>", 1)[0]
+    with pytest.raises(SdfError, match="joint 'axle' is of type 'ball'"):
+        parse_model(f"<sdf version='1.6'>{model}</sdf>", "spawn request")
