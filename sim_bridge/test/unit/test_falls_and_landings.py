@@ -49,8 +49,9 @@ def test_a_dropped_robot_rests_where_it_fell_facing_as_it_fell(world, drive, hei
         roll, pitch, _ = rpy_from_quaternion(world.pose("r")[1])
         tilt = max(tilt, math.degrees(max(abs(roll), abs(pitch))))
     (x, y, _), orientation = world.pose("r")
-    yaw = math.degrees(rpy_from_quaternion(orientation)[2])
+    roll, pitch, yaw = (math.degrees(a) for a in rpy_from_quaternion(orientation))
     assert math.hypot(x, y) < 0.01, (x, y)
+    assert abs(roll) < 1.0 and abs(pitch) < 1.0  # level, as spawned
     assert abs(yaw) < 1.0  # free wheels: up to 0.8 (pybullet's contact order), 0.3 driven
     assert tilt < 3.0
 

@@ -180,6 +180,21 @@ def test_effort_group_position_controller_reaches_its_positions_through_pid():
     world.close()
 
 
+def test_effort_group_controller_turns_the_joint_with_the_torque_it_is_given():
+    speeds = []
+    for torque in (1.0, 2.0, -1.0):
+        world, bus, model = arm("EffortJointInterface")
+        start(bus, "pan_effort_group")
+        bus.subscriptions["/arm_bot/pan_effort_group/command"](Float64MultiArray(data=[torque]))
+        run(world, 0.01)  # the light turret spins up fast: well before its limit at pi
+        speeds.append(model.robot.joint_position_velocity("pan")[1])
+        world.close()
+    # the pan axis is vertical: the torque alone turns it, twice as fast for twice the torque
+    assert speeds[0] > 0.1
+    assert speeds[1] == pytest.approx(2 * speeds[0], rel=0.05)
+    assert speeds[2] == pytest.approx(-speeds[0], rel=0.05)
+
+
 def test_effort_trajectory_controller_reaches_its_goal_through_pid():
     world, bus, model = arm("EffortJointInterface")
     start(bus, "effort_arm_controller")
