@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """rostest node: /clock comes every step unless use_clock_frequency sets a rate, as gazebo_ros
 publishes it (a student's ros::Rate(1000) in simulated time then wakes every 1 ms step, not
-every 4 ms: an open-loop turn timed that way went 2.5 times too far)."""
+every 4 ms: an open-loop turn timed that way went 2.5 times too far). A rospy.Rate(1000)
+loop's count is no measure of it: rospy's Rate catches up in bursts when it falls behind,
+and a Python subscriber on a loaded 2-core machine misses /clock messages (measured: 354
+turns a simulated second at every step, 595 at 250 Hz, with a test suite beside it)."""
 import time
 import unittest
 
@@ -34,20 +37,6 @@ class ClockRate(unittest.TestCase):
         # (the publisher's queue of 10 drops the oldest while a burst of steps holds the
         # interpreter, as roscpp's queue does in Gazebo), so longer gaps say nothing
         self.assertAlmostEqual(min(gaps), expected, delta=1e-6)
-
-    def test_a_1000_hz_loop_in_simulated_time(self):
-        """A student's rospy.Rate(1000) loop for one simulated second: about 1000 turns with
-        /clock every 1 ms step, about 250 at 250 Hz (where an open-loop turn timed by it ran
-        long)."""
-        low, high = rospy.get_param("~loops")
-        rate = rospy.Rate(1000)
-        end = rospy.Time.now() + rospy.Duration(1.0)
-        loops = 0
-        limit = time.monotonic() + TIMEOUT
-        while rospy.Time.now() < end and time.monotonic() < limit:
-            rate.sleep()
-            loops += 1
-        self.assertTrue(low <= loops <= high, f"{loops} loops, expected {low} to {high}")
 
 
 if __name__ == "__main__":
