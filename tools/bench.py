@@ -62,6 +62,8 @@ WINDOW = 10.0  # wall seconds each rate is measured over
 STEP_240 = 1.0 / 240.0  # the step of the second world (pybullet's default)
 ROBOT_COUNTS = (1, 2, 4, 8)
 RVIZ_TOPICS = ("/tf", "/odom", "/scan", "/gazebo/model_states")
+# what a user watching the sensor robot's cameras subscribes to (rviz's Image and PointCloud2)
+CAMERA_TOPICS = ("/front_camera/image_raw", "/kinect/depth/image_raw", "/kinect/points")
 SOAK_MINUTES = float(os.environ.get("BENCH_SOAK_MINUTES", "10"))
 SOAK_WARM_UP = 60.0  # s of the soak before the RSS it grows from is read
 PLANNING_TARGETS = 200
@@ -80,6 +82,10 @@ TARGETS = {
     "soak: RSS growth (MB)": ("<", 5.0),
     "soak: failed calls": ("<=", 0.0),
     "arm planning, median (ms)": ("<=", 50.0),
+    # a user at real time must not notice the cameras: the simulator keeps real time, and
+    # a 15 Hz 320x240 camera takes at most a third of a core (15 images of 20 ms)
+    "cameras watched at real time: real-time factor": (">=", 0.99),
+    "camera image 320x240 (ms)": ("<=", 20.0),
 }
 
 
@@ -238,7 +244,7 @@ def measure_window(probe: RosProbe, pid: int) -> Dict[str, float]:
 def measure_ros(env: Dict[str, str], probe: RosProbe, name: str, real_time_factor: str = "0",
                 world: Optional[str] = None, robots: int = 0,
                 listen: Sequence[str] = (), stop_a_subscriber: bool = False,
-                clock_hz: float = 0) -> Dict[str, float]:
+                clock_hz: float = 0, sensors: bool = False) -> Dict[str, float]:
     """One launch of the bench scene: the launch's own robot, or ``robots`` robots in
     namespaces; measured over a window once the first /scan (or /clock) arrived. ``clock_hz``:
     /clock at that rate (use_clock_frequency, the fast setting); 0: every step, Gazebo's."""
@@ -250,6 +256,8 @@ def measure_ros(env: Dict[str, str], probe: RosProbe, name: str, real_time_facto
         arguments.append(f"world:={world}")
     if clock_hz:
         arguments += ["use_clock_frequency:=true", f"pub_clock_frequency:={clock_hz:g}"]
+    if sensors:
+        arguments.append("sensors:=true")
     held: List[object] = []
     blocked = None
     started = time.monotonic()
@@ -396,6 +404,33 @@ def measure_bare() -> float:
     return steps * world.step_size / elapsed
 
 
+def measure_images(count: int = 20) -> Dict[str, float]:
+    """Milliseconds a camera image (render and message) and a depth image with its cloud
+    take, the sensor robot in the bench world, without ROS."""
+    from sim_bridge.local_bus import LocalBus
+    from sim_bridge.sdf_world import load_world
+    from sim_bridge.world import World
+    from urdf_tools.xacro_loader import expand
+
+    world = World(LocalBus(), ray_threads=1)
+    world.load_world(load_world(os.path.join(BENCH, "bench.world"), warn=lambda _text: None))
+    model = world.spawn_urdf("sensor_bot", expand(os.path.join(
+        REPO, "sim_bridge", "test", "data", "sensor_bot.urdf.xacro")), (-2.5, 0.0, 0.01))
+    cameras = {type(p).__name__: p for p in model.plugins if type(p).__name__.endswith("Camera")}
+    result = {}
+    for name, key in (("Camera", "camera"), ("DepthCamera", "depth")):
+        camera = cameras[name]
+        started = time.perf_counter()
+        for step in range(count):
+            pixels, depth = camera.capture()
+            if key == "depth":
+                camera.points(camera.info.header.stamp, pixels, depth)
+            camera.image(camera.info.header.stamp, pixels, camera.view.encoding)
+        result[key] = 1000.0 * (time.perf_counter() - started) / count
+    world.close()
+    return result
+
+
 def measure_planning() -> Dict[str, float]:
     """Plans to the random targets of arm_move's planner test, as the mover would."""
     import numpy as np
@@ -453,6 +488,12 @@ def main() -> int:
             paced = measure_ros(env, probe, "paced", real_time_factor="1")
             print("bench: rviz-like subscribers...", flush=True)
             rviz = measure_ros(env, probe, "rviz", listen=RVIZ_TOPICS)
+            print("bench: cameras watched, as fast as it can...", flush=True)
+            cameras_fast = measure_ros(env, probe, "cameras_fast", sensors=True,
+                                       listen=CAMERA_TOPICS)
+            print("bench: cameras watched, at real time...", flush=True)
+            cameras_paced = measure_ros(env, probe, "cameras_paced", real_time_factor="1",
+                                        sensors=True, listen=CAMERA_TOPICS)
             print("bench: a stopped subscriber...", flush=True)
             stopped = measure_ros(env, probe, "stopped", stop_a_subscriber=True)
             crowd = {}
@@ -470,6 +511,8 @@ def main() -> int:
     bare = measure_bare()
     print("bench: lasers...", flush=True)
     lasers = laser_cost.measure()
+    print("bench: camera images...", flush=True)
+    images = measure_images()
     print("bench: arm planning...", flush=True)
     planning = measure_planning()
     one, eight = crowd[1]["cpu_ms_per_sim_s"], crowd[8]["cpu_ms_per_sim_s"]
@@ -490,6 +533,11 @@ def main() -> int:
         ("8 robots' cost / 8 x one robot's", eight / (8 * one), "{:.2f}"),
         ("8 robots, max real-time factor", crowd[8]["rtf"], "{:.1f}"),
         ("rviz-like subscribers, max real-time factor", rviz["rtf"], "{:.1f}"),
+        ("cameras watched, max real-time factor", cameras_fast["rtf"], "{:.1f}"),
+        ("cameras watched at real time: real-time factor", cameras_paced["rtf"], "{:.3f}"),
+        ("cameras watched at real time: CPU (% of a core)", cameras_paced["cpu"], "{:.1f}"),
+        ("camera image 320x240 (ms)", images["camera"], "{:.1f}"),
+        ("depth image and cloud 160x120 (ms)", images["depth"], "{:.1f}"),
         ("stopped subscriber: real-time factor kept (%)", 100.0 * stopped["rtf"] / fast["rtf"],
          "{:.0f}"),
     ]
