@@ -8,6 +8,7 @@ import os
 import subprocess
 import sys
 import textwrap
+import time
 
 import pytest
 import yaml
@@ -162,6 +163,17 @@ def alive(pid):
         return False
 
 
+def dies(pid, limit=5.0):
+    """Whether ``pid`` is gone within ``limit`` s: a process SIGKILLed a moment ago may
+    still be exiting (seen once in the unit tier, the machine busy)."""
+    deadline = time.monotonic() + limit
+    while alive(pid):
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(0.02)
+    return True
+
+
 def test_a_hung_child_is_killed_with_what_it_started_and_its_sibling_is_graded(tmp_path):
     ready = str(tmp_path / "hung_ready")
     hung_out, sibling_out = str(tmp_path / "hung"), str(tmp_path / "sibling")
@@ -180,7 +192,7 @@ def test_a_hung_child_is_killed_with_what_it_started_and_its_sibling_is_graded(t
     assert hung.seconds >= HUNG_LIMIT
     with open(ready, encoding="utf-8") as stream:
         grandchild = int(stream.read())
-    assert not alive(grandchild), "the process the hung child started in its own session lives"
+    assert dies(grandchild), "the process the hung child started in its own session lives"
     assert not batch.marked(f"{runner.tag}-0") and not batch.marked(f"{runner.tag}-1")
     assert sibling.status == "graded" and sibling.total == 0.75, sibling
     with open(os.path.join(sibling_out, "report.json"), encoding="utf-8") as stream:

@@ -36,6 +36,7 @@ ROVER = """<sdf version="1.6"><model name="rover"><pose>1 2 0.06 0 0 0</pose>
   <joint name="right_wheel_hinge" type="revolute"><parent>chassis</parent>
     <child>right_wheel</child><axis><xyz>0 0 1</xyz></axis></joint>
   <plugin name="drive" filename="libgazebo_ros_diff_drive.so">
+    <legacyMode>false</legacyMode>
     <leftJoint>left_wheel_hinge</leftJoint><rightJoint>right_wheel_hinge</rightJoint>
     <wheelSeparation>0.36</wheelSeparation><wheelDiameter>0.12</wheelDiameter>
     <wheelTorque>5</wheelTorque><commandTopic>rover/cmd_vel</commandTopic>
