@@ -173,3 +173,16 @@ def test_depth_beyond_the_cutoff_is_nan(scene, bus):
     run(scene, 0.15)
     depth = np.frombuffer(bus.last("/kinect/depth/image_raw").data, np.float32)
     assert np.isnan(depth).all()
+
+
+def test_a_camera_too_costly_to_watch_at_real_time_says_so_at_spawn(world, bus):
+    big = robot().replace(f"<width>{WIDTH}</width><height>{HEIGHT}</height>",
+                          "<width>1920</width><height>1080</height>").replace(
+        "<update_rate>10</update_rate>", "<update_rate>30</update_rate>")
+    world.spawn_urdf("cam_bot", big, (0, 0, CAMERA_HEIGHT))
+    (warning,) = [w for w in bus.warnings if "renders" in w]
+    assert "1920 x 1080 images at 30 Hz" in warning and "x real time" in warning
+    bus.warnings.clear()
+    world.delete("cam_bot")
+    world.spawn_urdf("cam_bot", robot(), (0, 0, CAMERA_HEIGHT))  # 160 x 120 at 10 Hz
+    assert not [w for w in bus.warnings if "renders" in w]
