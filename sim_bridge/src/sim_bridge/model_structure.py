@@ -85,26 +85,44 @@ def urdf_structure(model: RobotModel) -> Structure:
     body_of: Dict[str, str] = {}
     lumped_by: Dict[str, str] = {}
 
-    def add_body(link: str) -> None:
-        bodies.append(link)
-        sources: List[str] = []  # the link each of the body's collisions comes from
-        kept: List[Joint] = []  # joints to further bodies, in the order met
+    # Depth-first, as sdformat walks the tree, without recursion: a chain of a thousand
+    # links (urdf_tools.model.MAX_LINKS) is deeper than Python's recursion limit.
+    def gather(link: str) -> List[Joint]:
+        """The body ``link`` starts: its lumped links' collisions in order; the joints to
+        further bodies, in the order met."""
+        sources: List[str] = []
+        kept: List[Joint] = []
+        stack: List = []
 
-        def gather(member: str) -> None:
+        def visit(member: str) -> None:
             body_of[member] = link
             sources.extend([member] * len(model.links[member].collisions))
-            for joint in children.get(member, []):
-                if is_lumped(model, joint):
-                    lumped_by[joint.child] = joint.name
-                    gather(joint.child)
-                else:
-                    kept.append(joint)
+            stack.append(iter(children.get(member, [])))
 
-        gather(link)
+        visit(link)
+        while stack:
+            joint = next(stack[-1], None)
+            if joint is None:
+                stack.pop()
+            elif is_lumped(model, joint):
+                lumped_by[joint.child] = joint.name
+                visit(joint.child)
+            else:
+                kept.append(joint)
         geoms.extend(_geom_names(link, sources))
-        for joint in kept:
+        return kept
+
+    def add_body(link: str) -> None:
+        bodies.append(link)
+        stack = [iter(gather(link))]
+        while stack:
+            joint = next(stack[-1], None)
+            if joint is None:
+                stack.pop()
+                continue
             joints.append(joint.name)
-            add_body(joint.child)
+            bodies.append(joint.child)
+            stack.append(iter(gather(joint.child)))
 
     root = model.root()
     if root == WORLD_LINK:  # fixed (or jointed) to the world: world is no link of the model

@@ -63,3 +63,19 @@ def test_sdf_models_are_their_links():
     structure = sdf_structure(spec)
     assert structure.bodies == ("a", "b") and structure.joints == ()
     assert structure.geoms == ("a_collision", "a_collision_1")
+
+
+def test_a_chain_of_a_thousand_links_is_walked_without_recursion():
+    # found by the spawn fuzzer: 999 links lumped one into the next overflowed Python's stack
+    links = "".join(f'<link name="l{i}"><collision><geometry><box size="1 1 1"/></geometry>'
+                    f'</collision></link>' for i in range(999))
+    fixed = "".join(f'<joint name="j{i}" type="fixed"><parent link="l{i}"/>'
+                    f'<child link="l{i + 1}"/></joint>' for i in range(998))
+    lumped = urdf_structure(parse_urdf(f'<robot name="r">{links}{fixed}</robot>', "chain"))
+    assert lumped.bodies == ("l0",) and len(lumped.geoms) == 999
+    assert lumped.geoms[1] == "l0_fixed_joint_lump__l1_collision_1"
+    hinged = "".join(f'<joint name="j{i}" type="revolute"><parent link="l{i}"/>'
+                     f'<child link="l{i + 1}"/><limit lower="0" upper="1" effort="1" '
+                     f'velocity="1"/></joint>' for i in range(998))
+    jointed = urdf_structure(parse_urdf(f'<robot name="r">{links}{hinged}</robot>', "chain"))
+    assert len(jointed.bodies) == 999 and jointed.joints[-1] == "j997"
