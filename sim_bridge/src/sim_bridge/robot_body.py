@@ -315,6 +315,10 @@ def prepare_urdf(xml: str, model: RobotModel, tags: GazeboTags, warn) -> str:
     return ET.tostring(root, encoding="unicode")
 
 
+# the most joints pybullet builds in one body (it returns a body it did not build beyond)
+MAX_PYBULLET_JOINTS = 127
+
+
 class RobotBody:
     """A loaded URDF robot: link and joint access by name, in link frames."""
 
@@ -336,6 +340,14 @@ class RobotBody:
             raise UrdfError(f"{model.source}: pybullet could not load it: {error}") from None
         finally:
             os.unlink(path)
+        try:  # pybullet returns a body it did not build when it has more than 127 joints
+            pb.getBasePositionAndOrientation(self.id, physicsClientId=client)
+        except pb.error:
+            pb.removeBody(self.id, physicsClientId=client)
+            raise UrdfError(f"{model.source}: pybullet could not build it: it has "
+                            f"{len(model.links)} links and {len(model.joints)} joints, and "
+                            f"pybullet builds at most {MAX_PYBULLET_JOINTS + 1} links "
+                            f"({MAX_PYBULLET_JOINTS} joints) in one body") from None
         self.link_index: Dict[str, int] = {model.root(): -1}
         self.joint_index: Dict[str, int] = {}
         for index in range(pb.getNumJoints(self.id, physicsClientId=client)):
