@@ -317,6 +317,9 @@ def prepare_urdf(xml: str, model: RobotModel, tags: GazeboTags, warn) -> str:
 
 # the most joints pybullet builds in one body (it returns a body it did not build beyond)
 MAX_PYBULLET_JOINTS = 127
+# the longest link or joint name taken: pybullet crashed (SIGSEGV) loading a joint named by
+# 5000 characters (the spawn fuzzer's), and read 1000 well
+MAX_NAME_LENGTH = 1024
 
 
 class RobotBody:
@@ -330,6 +333,13 @@ class RobotBody:
         flags = pb.URDF_USE_INERTIA_FROM_FILE | pb.URDF_USE_IMPLICIT_CYLINDER
         if tags.self_collide or any(s.self_collide for s in tags.surfaces.values()):
             flags |= pb.URDF_USE_SELF_COLLISION | pb.URDF_USE_SELF_COLLISION_EXCLUDE_PARENT
+        too_long = [name for name in (*model.links, *model.joints)
+                    if len(name) > MAX_NAME_LENGTH]
+        if too_long:
+            raise UrdfError(f"{model.source}: a link or joint name of {len(too_long[0])} "
+                            f"characters ('{too_long[0][:40]}...'); sim_bridge takes names of "
+                            f"at most {MAX_NAME_LENGTH} (MAX_NAME_LENGTH): pybullet crashes on "
+                            "longer ones")
         with tempfile.NamedTemporaryFile("w", suffix=".urdf", delete=False) as stream:
             stream.write(prepared)
             path = stream.name
@@ -342,8 +352,7 @@ class RobotBody:
             os.unlink(path)
         try:  # pybullet returns a body it did not build when it has more than 127 joints
             pb.getBasePositionAndOrientation(self.id, physicsClientId=client)
-        except pb.error:
-            pb.removeBody(self.id, physicsClientId=client)
+        except pb.error:  # (removing the body pybullet did not build crashes it)
             raise UrdfError(f"{model.source}: pybullet could not build it: it has "
                             f"{len(model.links)} links and {len(model.joints)} joints, and "
                             f"pybullet builds at most {MAX_PYBULLET_JOINTS + 1} links "

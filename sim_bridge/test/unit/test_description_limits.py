@@ -328,3 +328,12 @@ def test_a_robot_of_more_links_than_pybullet_builds_is_refused_naming_the_count(
     assert "long" not in world.models
     world.spawn_urdf("short", chain(128))
     assert world.pose("short")[0] is not None  # 128 links: built
+
+
+def test_a_name_longer_than_pybullet_takes_is_refused_before_pybullet_sees_it(world):
+    # found by the spawn fuzzer: a joint named by 5000 characters crashed pybullet (SIGSEGV)
+    from urdf_tools.model import UrdfError
+    long_name = chain(2).replace('name="j0"', f'name="{"n" * 5000}"')
+    with pytest.raises(UrdfError, match="name of 5000 characters.*at most 1024"):
+        world.spawn_urdf("long", long_name)
+    world.spawn_urdf("fine", chain(2).replace('name="j0"', f'name="{"n" * 1000}"'))
