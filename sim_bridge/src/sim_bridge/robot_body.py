@@ -315,7 +315,8 @@ def prepare_urdf(xml: str, model: RobotModel, tags: GazeboTags, warn) -> str:
     return ET.tostring(root, encoding="unicode")
 
 
-# the most joints pybullet builds in one body (it returns a body it did not build beyond)
+# the most joints pybullet builds in one body (beyond, it returns a body it did not build,
+# which cannot even be removed without crashing it): refused before it is asked
 MAX_PYBULLET_JOINTS = 127
 # the longest link or joint name taken: pybullet crashed (SIGSEGV) loading a joint named by
 # 5000 characters (the spawn fuzzer's), and read 1000 well
@@ -333,6 +334,11 @@ class RobotBody:
         flags = pb.URDF_USE_INERTIA_FROM_FILE | pb.URDF_USE_IMPLICIT_CYLINDER
         if tags.self_collide or any(s.self_collide for s in tags.surfaces.values()):
             flags |= pb.URDF_USE_SELF_COLLISION | pb.URDF_USE_SELF_COLLISION_EXCLUDE_PARENT
+        if len(model.joints) > MAX_PYBULLET_JOINTS:  # it would hand back an unbuilt body
+            raise UrdfError(f"{model.source}: pybullet could not build it: it has "
+                            f"{len(model.links)} links and {len(model.joints)} joints, and "
+                            f"pybullet builds at most {MAX_PYBULLET_JOINTS + 1} links "
+                            f"({MAX_PYBULLET_JOINTS} joints) in one body")
         too_long = [name for name in (*model.links, *model.joints)
                     if len(name) > MAX_NAME_LENGTH]
         if too_long:
@@ -350,13 +356,7 @@ class RobotBody:
             raise UrdfError(f"{model.source}: pybullet could not load it: {error}") from None
         finally:
             os.unlink(path)
-        try:  # pybullet returns a body it did not build when it has more than 127 joints
-            pb.getBasePositionAndOrientation(self.id, physicsClientId=client)
-        except pb.error:  # (removing the body pybullet did not build crashes it)
-            raise UrdfError(f"{model.source}: pybullet could not build it: it has "
-                            f"{len(model.links)} links and {len(model.joints)} joints, and "
-                            f"pybullet builds at most {MAX_PYBULLET_JOINTS + 1} links "
-                            f"({MAX_PYBULLET_JOINTS} joints) in one body") from None
+
         self.link_index: Dict[str, int] = {model.root(): -1}
         self.joint_index: Dict[str, int] = {}
         for index in range(pb.getNumJoints(self.id, physicsClientId=client)):
