@@ -13,8 +13,10 @@ from typing import Any, Callable, Optional, Sequence
 
 import genpy
 import numpy as np
+import pybullet as pb
 
 from sim_bridge.gazebo_tags import PluginSpec
+from sim_bridge.poses import pose6_to_position_quaternion
 
 
 class PluginError(ValueError):
@@ -234,6 +236,30 @@ class Plugin:
 
     def close(self) -> None:
         """The model is deleted: stop talking to ROS."""
+
+
+class SensorPlugin(Plugin):
+    """A sensor's plugin: the sensor's link and its ``<pose>`` in the link's frame, and where
+    that is in the world now (from the link's true pose, rotation included)."""
+
+    def __init__(self, context: PluginContext, spec: PluginSpec, sensor):
+        super().__init__(context, spec)
+        self.link = sensor.link
+        if self.link not in context.robot.link_index:
+            raise PluginError(f"sensor '{sensor.name}' is on link '{self.link}', which the "
+                              "model does not have")
+        pose_text = sensor.element.findtext("pose")
+        pose = tuple(float(v) for v in pose_text.split()) if pose_text else (0.0,) * 6
+        if len(pose) != 6:
+            raise PluginError(f"sensor '{sensor.name}': <pose> needs 6 numbers")
+        self.sensor_position, self.sensor_orientation = pose6_to_position_quaternion(pose)
+
+    def sensor_pose(self):
+        """(position, quaternion) of the sensor in the world."""
+        link_position, link_orientation = self.context.robot.link_pose(self.link)
+        return pb.multiplyTransforms(link_position, link_orientation, self.sensor_position,
+                                     self.sensor_orientation,
+                                     physicsClientId=self.context.client)
 
 
 class Rate:

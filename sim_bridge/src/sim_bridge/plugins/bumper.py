@@ -58,7 +58,7 @@ class Bumper(Plugin):
                 f"{context.model_name}::{holder}::{collision}"
         self.rate = Rate(_rate(sensor))
         frame = self.param("frameName", "world") or "world"
-        self.frame_link = None if frame == "world" else robot.link_index.get(frame)
+        self.frame_link = None if frame == "world" or frame not in robot.link_index else frame
         if frame != "world" and self.frame_link is None:
             self.unreadable("frameName", frame, "world or a link of the model", "world")
             frame = "world"
@@ -71,9 +71,7 @@ class Bumper(Plugin):
         """(rotation, origin) taking world vectors and points into the output frame."""
         if self.frame_link is None:
             return np.eye(3), np.zeros(3)
-        robot = self.context.robot
-        position, orientation = robot.link_pose(
-            [name for name, index in robot.link_index.items() if index == self.frame_link][0])
+        position, orientation = self.context.robot.link_pose(self.frame_link)
         rotation = np.array(pb.getMatrixFromQuaternion(orientation)).reshape(3, 3)
         return rotation.T, np.asarray(position)
 

@@ -33,8 +33,7 @@ import numpy as np
 import pybullet as pb
 from sensor_msgs.msg import CameraInfo, Image, PointCloud2, PointField
 
-from sim_bridge.plugins.base import Plugin, PluginError, Rate, stamp
-from sim_bridge.poses import pose6_to_position_quaternion
+from sim_bridge.plugins.base import PluginError, Rate, SensorPlugin, stamp
 
 # Gazebo's image formats sim_bridge renders → (ROS encoding, channels)
 FORMATS = {"R8G8B8": ("rgb8", 3), "RGB_INT8": ("rgb8", 3), "B8G8R8": ("bgr8", 3),
@@ -123,7 +122,7 @@ class CameraView:
         return rgb, depth
 
 
-class Camera(Plugin):
+class Camera(SensorPlugin):
     """gazebo_ros_camera: sensor_msgs/Image and CameraInfo of a ``camera`` sensor."""
 
     # the topics' defaults (the depth cameras' differ)
@@ -131,16 +130,7 @@ class Camera(Plugin):
     INFO_TOPIC = "camera_info"
 
     def __init__(self, context, spec, sensor):
-        super().__init__(context, spec)
-        self.link = sensor.link
-        if self.link not in context.robot.link_index:
-            raise PluginError(f"sensor '{sensor.name}' is on link '{self.link}', which the "
-                              "model does not have")
-        pose_text = sensor.element.findtext("pose")
-        pose = tuple(float(v) for v in pose_text.split()) if pose_text else (0.0,) * 6
-        if len(pose) != 6:
-            raise PluginError(f"sensor '{sensor.name}': <pose> needs 6 numbers")
-        self.sensor_position, self.sensor_orientation = pose6_to_position_quaternion(pose)
+        super().__init__(context, spec, sensor)
         self.view = CameraView(sensor)
         plugin_rate = self.number("updateRate", 0.0)
         sensor_rate = _number(sensor.element, "update_rate", 0.0, sensor.name)
@@ -192,11 +182,6 @@ class Camera(Plugin):
         info.R = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]
         info.P = [focal, 0.0, cx, -focal * baseline, 0.0, focal, cy, 0.0, 0.0, 0.0, 1.0, 0.0]
         return info
-
-    def sensor_pose(self):
-        link_position, link_orientation = self.context.robot.link_pose(self.link)
-        return pb.multiplyTransforms(link_position, link_orientation, self.sensor_position,
-                                     self.sensor_orientation)
 
     def capture(self) -> Tuple[np.ndarray, np.ndarray]:
         """(the image as published, height x width x channels uint8; depth in metres)."""

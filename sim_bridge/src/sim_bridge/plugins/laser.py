@@ -24,8 +24,7 @@ import numpy as np
 import pybullet as pb
 from sensor_msgs.msg import LaserScan
 
-from sim_bridge.plugins.base import Plugin, PluginError, Rate, stamp
-from sim_bridge.poses import pose6_to_position_quaternion
+from sim_bridge.plugins.base import PluginError, Rate, SensorPlugin, stamp
 
 # The most beams (horizontal x vertical samples) one sensor may cast. Real 2D scanners have
 # about 1000 (Hokuyo UTM-30LX 1081, SICK LMS1xx 1141), the courses' 720. Every beam is cast
@@ -54,17 +53,11 @@ def _count(element, path: str, default: int, sensor: str) -> int:
     return int(value)
 
 
-class Laser(Plugin):
+class Laser(SensorPlugin):
     def __init__(self, context, spec, sensor):
-        super().__init__(context, spec)
+        super().__init__(context, spec, sensor)
         element = sensor.element
         name = sensor.name
-        self.link = sensor.link
-        pose_text = element.findtext("pose")
-        pose = tuple(float(v) for v in pose_text.split()) if pose_text else (0.0,) * 6
-        if len(pose) != 6:
-            raise PluginError(f"sensor '{name}': <pose> needs 6 numbers")
-        self.sensor_position, self.sensor_orientation = pose6_to_position_quaternion(pose)
         ray = element.find("ray")
         if ray is None:
             raise PluginError(f"sensor '{name}' of type {sensor.type} needs a <ray> element")
@@ -98,14 +91,6 @@ class Laser(Plugin):
         self.frame_id = self.frame(self.param("frameName", "/world"))
         self.output = context.bus.publisher(self.topic(self.param("topicName", "/world")),
                                             LaserScan, queue_size=1)
-        if self.link not in context.robot.link_index:
-            raise PluginError(f"sensor '{name}' is on link '{self.link}', which the model "
-                              "does not have")
-
-    def sensor_pose(self):
-        link_position, link_orientation = self.context.robot.link_pose(self.link)
-        return pb.multiplyTransforms(link_position, link_orientation, self.sensor_position,
-                                     self.sensor_orientation)
 
     def measure(self) -> np.ndarray:
         """One scan's ranges (metres; +inf where nothing is within range)."""

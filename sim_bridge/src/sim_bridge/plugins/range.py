@@ -16,26 +16,16 @@ import numpy as np
 import pybullet as pb
 from sensor_msgs.msg import Range as RangeMessage
 
-from sim_bridge.plugins.base import Plugin, PluginError, Rate, stamp
+from sim_bridge.plugins.base import PluginError, Rate, SensorPlugin, stamp
 from sim_bridge.plugins.laser import MAX_BEAMS, _count, _number
-from sim_bridge.poses import pose6_to_position_quaternion
 
 RADIATION = {"ultrasound": RangeMessage.ULTRASOUND, "infrared": RangeMessage.INFRARED}
 
 
-class Range(Plugin):
+class Range(SensorPlugin):
     def __init__(self, context, spec, sensor):
-        super().__init__(context, spec)
+        super().__init__(context, spec, sensor)
         name, element = sensor.name, sensor.element
-        self.link = sensor.link
-        if self.link not in context.robot.link_index:
-            raise PluginError(f"sensor '{name}' is on link '{self.link}', which the model "
-                              "does not have")
-        pose_text = element.findtext("pose")
-        pose = tuple(float(v) for v in pose_text.split()) if pose_text else (0.0,) * 6
-        if len(pose) != 6:
-            raise PluginError(f"sensor '{name}': <pose> needs 6 numbers")
-        self.sensor_position, self.sensor_orientation = pose6_to_position_quaternion(pose)
         ray = element.find("ray")
         if ray is None:
             raise PluginError(f"sensor '{name}' of type {sensor.type} needs a <ray> element")
@@ -75,9 +65,7 @@ class Range(Plugin):
 
     def measure(self) -> float:
         """The nearest ray's distance (m), noise added; +inf when nothing is in range."""
-        link_position, link_orientation = self.context.robot.link_pose(self.link)
-        position, orientation = pb.multiplyTransforms(
-            link_position, link_orientation, self.sensor_position, self.sensor_orientation)
+        position, orientation = self.sensor_pose()
         rotation = np.array(pb.getMatrixFromQuaternion(orientation)).reshape(3, 3)
         nearest = float(np.min(self.context.cast_rays(position, self.directions @ rotation.T,
                                                       self.range_min, self.range_max)))
