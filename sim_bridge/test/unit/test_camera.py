@@ -186,3 +186,67 @@ def test_a_camera_too_costly_to_watch_at_real_time_says_so_at_spawn(world, bus):
     world.delete("cam_bot")
     world.spawn_urdf("cam_bot", robot(), (0, 0, CAMERA_HEIGHT))  # 160 x 120 at 10 Hz
     assert not [w for w in bus.warnings if "renders" in w]
+
+
+def stereo_rig(baseline, third_camera=""):
+    """The camera robot with a multicamera sensor: two heads ``baseline`` apart along y
+    (left at +y, as REP 103 has the left), looking along +x."""
+    def head(name, y):
+        return f"""<camera name="{name}"><pose>0 {y} 0 0 0 0</pose>
+          <horizontal_fov>{HFOV}</horizontal_fov>
+          <image><width>{WIDTH}</width><height>{HEIGHT}</height><format>R8G8B8</format>
+          </image><clip><near>0.05</near><far>50</far></clip></camera>"""
+    cameras = head("left", baseline / 2) + head("right", -baseline / 2) + third_camera
+    return robot().replace('type="camera"', 'type="multicamera"').replace(
+        "libgazebo_ros_camera.so", "libgazebo_ros_multicamera.so").replace(
+        "<cameraName>front</cameraName>",
+        f"<cameraName>stereo</cameraName><hackBaseline>{baseline}</hackBaseline>").replace(
+        robot().split("<camera>")[1].split("</camera>")[0], "").replace(
+        "<camera></camera>", cameras)
+
+
+def red_columns(image):
+    pixels = np.frombuffer(image.data, np.uint8).reshape(HEIGHT, WIDTH, 3).astype(int)
+    red = (pixels[:, :, 0] > 150) & (pixels[:, :, 1] < 80) & (pixels[:, :, 2] < 80)
+    columns = np.nonzero(red.any(axis=0))[0]
+    return columns.min(), columns.max()
+
+
+def test_a_stereo_rig_sees_the_crate_with_the_disparity_its_baseline_gives(scene, bus):
+    baseline = 0.5
+    scene.spawn_urdf("cam_bot", stereo_rig(baseline), (0, 0, CAMERA_HEIGHT))
+    run(scene, 0.15)
+    left, right = bus.last("/stereo/left/image_raw"), bus.last("/stereo/right/image_raw")
+    assert left.header.stamp == right.header.stamp  # one shutter
+    assert left.header.frame_id == right.header.frame_id == "camera_optical"
+    focal = WIDTH / (2 * math.tan(HFOV / 2))
+    half_width = 0.25 / 2.65 * focal
+    # the crate (y -0.25..0.25 m, 2.65 m ahead) seen from y = +-0.25 m: shifted by
+    # f * 0.25 / 2.65 to the right in the left image and to the left in the right one
+    shift = 0.25 / 2.65 * focal
+    for image, sign in ((left, 1), (right, -1)):
+        low, high = red_columns(image)
+        assert low == pytest.approx(WIDTH / 2 - half_width + sign * shift, abs=2)
+        assert high == pytest.approx(WIDTH / 2 + half_width + sign * shift, abs=2)
+    assert bus.last("/stereo/left/camera_info").P[3] == 0.0
+    assert bus.last("/stereo/right/camera_info").P[3] == pytest.approx(-focal * baseline)
+
+
+def test_a_multicamera_head_named_neither_left_nor_right_publishes_nothing(scene, bus):
+    middle = stereo_rig(0.1).split('<camera name="left">')[1].split("</camera>")[0]
+    scene.spawn_urdf("cam_bot", stereo_rig(0.1, f'<camera name="middle">{middle}</camera>'),
+                     (0, 0, CAMERA_HEIGHT))
+    run(scene, 0.15)
+    assert any("camera 'middle' is named neither left nor right" in w for w in bus.warnings)
+    assert sorted(t for t in bus.published if t.startswith("/stereo")) == [
+        "/stereo/left/camera_info", "/stereo/left/image_raw", "/stereo/right/camera_info",
+        "/stereo/right/image_raw"]
+
+
+def test_a_deleted_camera_closes_its_topics(scene, bus):
+    scene.spawn_urdf("cam_bot", stereo_rig(0.1), (0, 0, CAMERA_HEIGHT))
+    scene.spawn_urdf("kinect_bot", kinect(), (0, 2, CAMERA_HEIGHT))
+    scene.delete("cam_bot")
+    scene.delete("kinect_bot")
+    assert {"/stereo/left/image_raw", "/stereo/right/camera_info", "/kinect/points",
+            "/kinect/depth/image_raw"} <= set(bus.closed)

@@ -18,7 +18,7 @@ from typing import Callable, List, Set
 from sim_bridge.gazebo_tags import GazeboTags, PluginSpec
 from sim_bridge.plugins.base import Plugin, PluginContext, PluginError, TrackingBus
 from sim_bridge.plugins.bumper import Bumper
-from sim_bridge.plugins.camera import Camera, DepthCamera
+from sim_bridge.plugins.camera import Camera, DepthCamera, MultiCamera
 from sim_bridge.plugins.diff_drive import DiffDrive
 from sim_bridge.plugins.gazebo_ros_imu import GazeboRosImu
 from sim_bridge.plugins.hector_gps import HectorGps
@@ -57,6 +57,7 @@ SENSOR_PLUGINS = {
     "libgazebo_ros_bumper.so": (Bumper, ("contact",)),
     "libgazebo_ros_openni_kinect.so": (DepthCamera, ("depth",)),
     "libgazebo_ros_depth_camera.so": (DepthCamera, ("depth",)),
+    "libgazebo_ros_multicamera.so": (MultiCamera, ("multicamera",)),
 }
 
 

@@ -235,7 +235,12 @@ class Plugin:
         """The world was reset: forget integrated state."""
 
     def close(self) -> None:
-        """The model is deleted: stop talking to ROS."""
+        """The model is deleted: everything the plugin opened on ROS (publishers,
+        subscribers, services, actions) is closed. Plugins are built on a
+        :class:`TrackingBus`, which keeps what they open, so no plugin lists its own."""
+        close_all = getattr(self.context.bus, "close_all", None)
+        if close_all is not None:
+            close_all()
 
 
 class SensorPlugin(Plugin):

@@ -1,6 +1,8 @@
 """``<sensor type="camera">`` with ``libgazebo_ros_camera.so``, ``<sensor type="depth">`` with
-``libgazebo_ros_openni_kinect.so`` or ``libgazebo_ros_depth_camera.so``: images of the
-simulator's scene (:class:`DepthCamera` says what the depth cameras add).
+``libgazebo_ros_openni_kinect.so`` or ``libgazebo_ros_depth_camera.so``, ``<sensor
+type="multicamera">`` with ``libgazebo_ros_multicamera.so``: images of the simulator's scene
+(:class:`DepthCamera` says what the depth cameras add, :class:`MultiCamera` what a stereo
+rig is).
 
 From the sensor, as Gazebo reads it: ``<pose>`` (in the link's frame; the camera looks
 along the sensor frame's +x, +z up), ``<update_rate>`` (Hz of simulated time; 0 every step),
@@ -26,6 +28,7 @@ Stamps are simulated time.
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 from typing import Optional, Tuple
 
@@ -33,7 +36,8 @@ import numpy as np
 import pybullet as pb
 from sensor_msgs.msg import CameraInfo, Image, PointCloud2, PointField
 
-from sim_bridge.plugins.base import PluginError, Rate, SensorPlugin, stamp
+from sim_bridge.plugins.base import Plugin, PluginError, Rate, SensorPlugin, stamp
+from sim_bridge.poses import pose6_to_position_quaternion
 
 # Gazebo's image formats sim_bridge renders → (ROS encoding, channels)
 FORMATS = {"R8G8B8": ("rgb8", 3), "RGB_INT8": ("rgb8", 3), "B8G8R8": ("bgr8", 3),
@@ -69,11 +73,8 @@ class CameraView:
     """What a ``<camera>`` element describes: the image's size, the lens and the clip
     planes; renders the scene of a pybullet client from a pose."""
 
-    def __init__(self, sensor):
-        name = sensor.name
-        camera = sensor.element.find("camera")
-        if camera is None:
-            raise PluginError(f"sensor '{name}' of type {sensor.type} needs a <camera> element")
+    def __init__(self, camera, name: str):
+        """``camera``: the ``<camera>`` element; ``name``: the sensor's, for messages."""
         self.width = int(_number(camera, "image/width", 320, name))
         self.height = int(_number(camera, "image/height", 240, name))
         if self.width < 1 or self.height < 1 or self.width * self.height > MAX_PIXELS:
@@ -129,9 +130,19 @@ class Camera(SensorPlugin):
     IMAGE_TOPIC = "image_raw"
     INFO_TOPIC = "camera_info"
 
-    def __init__(self, context, spec, sensor):
+    def __init__(self, context, spec, sensor, head: Optional["Head"] = None):
+        """``head``: one camera of a multicamera sensor; None for the sensor's one
+        ``<camera>``."""
         super().__init__(context, spec, sensor)
-        self.view = CameraView(sensor)
+        element = sensor.element.find("camera") if head is None else head.element
+        if element is None:
+            raise PluginError(f"sensor '{sensor.name}' of type {sensor.type} needs a <camera> "
+                              "element")
+        self.view = CameraView(element, sensor.name)
+        if head is not None:  # the head's <pose> is in the sensor's frame
+            self.sensor_position, self.sensor_orientation = pb.multiplyTransforms(
+                self.sensor_position, self.sensor_orientation, head.position,
+                head.orientation, physicsClientId=context.client)
         plugin_rate = self.number("updateRate", 0.0)
         sensor_rate = _number(sensor.element, "update_rate", 0.0, sensor.name)
         rate = plugin_rate if plugin_rate > 0 else sensor_rate
@@ -147,8 +158,9 @@ class Camera(SensorPlugin):
                 "time (nothing is rendered while nobody does). A smaller <image> or a lower "
                 "<update_rate> keeps it near real time")
         self.frame_id = self.frame(self.param("frameName", "/world"))
-        self.camera_name = (self.param("cameraName", "") or "").strip("/")
-        self.info = self._camera_info()
+        camera_name = (self.param("cameraName", "") or "") + (head.suffix if head else "")
+        self.camera_name = camera_name.strip("/")
+        self.info = self._camera_info(None if head is None else head.baseline)
         self.image_out = self.publisher("imageTopicName", self.IMAGE_TOPIC, Image)
         self.info_out = self.publisher("cameraInfoTopicName", self.INFO_TOPIC, CameraInfo)
 
@@ -165,13 +177,15 @@ class Camera(SensorPlugin):
             return topic
         return f"{camera_name}/{topic}"
 
-    def _camera_info(self) -> CameraInfo:
+    def _camera_info(self, baseline: Optional[float]) -> CameraInfo:
+        """Gazebo's CameraInfo; ``baseline`` overrides ``hackBaseline`` (a stereo head's)."""
         view = self.view
         focal = self.number("focalLength", 0.0) or view.focal_length
         self.number("CxPrime", 0.0)  # read by gazebo_plugins and never put into CameraInfo
         cx = self.number("Cx", 0.0) or (view.width + 1.0) / 2.0
         cy = self.number("Cy", 0.0) or (view.height + 1.0) / 2.0
-        baseline = self.number("hackBaseline", 0.0)
+        if baseline is None:
+            baseline = self.number("hackBaseline", 0.0)
         info = CameraInfo()
         info.header.frame_id = self.frame_id
         info.width, info.height = view.width, view.height
@@ -200,6 +214,9 @@ class Camera(SensorPlugin):
     def active(self) -> bool:
         return self.context.bus.listened(self.image_out) or \
             self.context.bus.listened(self.info_out)
+
+    def reset(self, now_ns: int) -> None:
+        self.rate.reset(now_ns)
 
     def after_step(self, now_ns: int) -> None:
         if not self.rate.due(now_ns) or not self.active():
@@ -288,3 +305,60 @@ class DepthCamera(Camera):
         self.depth_info_out.publish(self.info)
         if self.context.bus.listened(self.points_out):
             self.points_out.publish(self.points(header_stamp, pixels, depth))
+
+
+@dataclasses.dataclass
+class Head:
+    """One ``<camera name="...">`` of a multicamera sensor: its element, its ``<pose>`` in
+    the sensor's frame, the suffix of its camera name and its CameraInfo baseline."""
+    element: object
+    position: Tuple[float, float, float]
+    orientation: Tuple[float, float, float, float]
+    suffix: str
+    baseline: float
+
+
+class MultiCamera(Plugin):
+    """gazebo_ros_multicamera on a ``multicamera`` sensor, as gazebo_plugins does it: a
+    camera whose name contains ``left`` publishes under ``<cameraName>/left`` with a
+    baseline of 0, one whose name contains ``right`` under ``<cameraName>/right`` with the
+    plugin's ``hackBaseline`` in its CameraInfo (P's fourth column, -f * baseline); the
+    others publish nothing (a warning names them). Each ``<camera>`` has its own ``<pose>``
+    in the sensor's frame, image and lens; all share the sensor's rate and ``frameName``
+    and are taken at the same step, as the plugin synchronises their shutters."""
+
+    def __init__(self, context, spec, sensor):
+        super().__init__(context, spec)
+        baseline = self.number("hackBaseline", 0.0)
+        self.cameras = []
+        for element in sensor.element.findall("camera"):
+            name = element.get("name", "")
+            side = "left" if "left" in name else "right" if "right" in name else None
+            if side is None:
+                context.bus.warn(f"model '{context.model_name}': sensor '{sensor.name}': camera "
+                                 f"'{name}' is named neither left nor right, so "
+                                 "gazebo_ros_multicamera publishes nothing of it; ignored")
+                continue
+            pose_text = element.findtext("pose")
+            try:
+                pose = tuple(float(v) for v in pose_text.split()) if pose_text else (0.0,) * 6
+            except ValueError:
+                pose = ()
+            if len(pose) != 6:
+                raise PluginError(f"sensor '{sensor.name}': camera '{name}': <pose> "
+                                  f"'{pose_text}' needs 6 numbers")
+            position, orientation = pose6_to_position_quaternion(pose)
+            head = Head(element, position, orientation, f"/{side}",
+                        baseline if side == "right" else 0.0)
+            self.cameras.append(Camera(context, spec, sensor, head))
+        if not self.cameras:
+            raise PluginError(f"sensor '{sensor.name}' of type multicamera has no <camera> "
+                              "named left or right")
+
+    def reset(self, now_ns: int) -> None:
+        for camera in self.cameras:
+            camera.reset(now_ns)
+
+    def after_step(self, now_ns: int) -> None:
+        for camera in self.cameras:
+            camera.after_step(now_ns)

@@ -165,8 +165,3 @@ class DiffDrive(DriveBase):
         self._reset_odometry()
         self._last_ns = None
         self.rate.reset(now_ns)
-
-    def close(self) -> None:
-        super().close()
-        if self.joints_out is not None:
-            self.joints_out.unregister()

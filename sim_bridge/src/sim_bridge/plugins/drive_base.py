@@ -115,7 +115,3 @@ class DriveBase(Plugin):
 
     def reset(self, now_ns: int) -> None:
         self.command = (0.0, 0.0)
-
-    def close(self) -> None:
-        self._subscription.unregister()
-        self.odom_out.unregister()

@@ -121,9 +121,3 @@ class GazeboRosImu(Plugin):
         self._last_ns = now_ns
         self._last_velocity = link_state(self.context, self.body)[2]
         self._acceleration = np.zeros(3)
-
-    def close(self) -> None:
-        if self.output is not None:
-            self.output.unregister()
-        if self.service is not None:
-            self.service.shutdown()

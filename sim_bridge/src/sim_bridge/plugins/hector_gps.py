@@ -138,7 +138,3 @@ class HectorGps(Plugin):
         self.timer.reset()
         self.position_model.reset()
         self.velocity_model.reset()
-
-    def close(self) -> None:
-        self.fix_output.unregister()
-        self.velocity_output.unregister()

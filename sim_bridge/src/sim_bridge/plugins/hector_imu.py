@@ -159,13 +159,6 @@ class HectorImu(Plugin):
         self.rate_model.reset()
         self.yaw_model.reset()
 
-    def close(self) -> None:
-        for publisher in (self.output, self.bias_output):
-            if publisher is not None:
-                publisher.unregister()
-        if self.service is not None:
-            self.service.shutdown()
-
 
 def _set_quaternion(target, q) -> None:
     target.x, target.y, target.z, target.w = (float(c) for c in q)

@@ -91,6 +91,3 @@ class ImuSensor(Plugin):
     def reset(self, now_ns: int) -> None:
         self.rate.reset(now_ns)
         self._last = None
-
-    def close(self) -> None:
-        self.output.unregister()

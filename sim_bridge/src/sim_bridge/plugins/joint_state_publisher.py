@@ -42,6 +42,3 @@ class JointStatePublisher(Plugin):
 
     def reset(self, now_ns: int) -> None:
         self.rate.reset(now_ns)
-
-    def close(self) -> None:
-        self.output.unregister()

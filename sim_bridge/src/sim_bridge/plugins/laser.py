@@ -126,6 +126,3 @@ class Laser(SensorPlugin):
 
     def reset(self, now_ns: int) -> None:
         self.rate.reset(now_ns)
-
-    def close(self) -> None:
-        self.output.unregister()

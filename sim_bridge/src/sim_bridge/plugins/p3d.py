@@ -104,6 +104,3 @@ class P3D(Plugin):
 
     def reset(self, now_ns: int) -> None:
         self.rate.reset(now_ns)
-
-    def close(self) -> None:
-        self.output.unregister()

@@ -226,6 +226,5 @@ class RosControl(Plugin):
 
     def close(self) -> None:
         for loaded in self.controllers.values():
-            loaded.controller.close()
-        for service in self.services:
-            service.shutdown()
+            loaded.controller.close()  # ends a running trajectory's goal, saying why
+        super().close()
