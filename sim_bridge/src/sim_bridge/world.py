@@ -563,7 +563,8 @@ class World:
         context = PluginContext(self.client, robot, name, model.namespace, self.bus,
                                 np.random.default_rng([self.seed, len(self.models)]),
                                 self.step_size, self.gravity, self.cast_rays, tf_prefix,
-                                self.model_of_body)
+                                self.model_of_body, model.structure,
+                                lambda body, name=name: self.applied_wrench(name, body))
         try:
             model.plugins = create_plugins(context, tags)
         except Exception:
@@ -919,6 +920,17 @@ class World:
             world_torque + np.cross(lever, world_force),
             Window.starting(self.now_ns, start_ns, duration_ns)))
         return ref
+
+    def applied_wrench(self, model_name: str, body: str) -> Tuple[np.ndarray, np.ndarray]:
+        """(force, torque) that the wrenches on a model's link apply on the step starting
+        now: world axes, the torque about the link's centre of mass."""
+        force, torque = np.zeros(3), np.zeros(3)
+        for wrench in self.forces.wrenches:
+            if (wrench.model, wrench.body) == (model_name, body) and \
+                    wrench.window.holds(self.now_ns):
+                force += wrench.force
+                torque += wrench.torque
+        return force, torque
 
     def clear_wrenches(self, body_name: str) -> int:
         """Ends the wrenches on a link; how many there were."""

@@ -9,7 +9,7 @@ parameters in the constructor; a missing required one raises :class:`PluginError
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Callable, Optional, Sequence
+from typing import Any, Callable, Optional, Sequence, Tuple
 
 import genpy
 import numpy as np
@@ -140,6 +140,12 @@ class PluginContext:
     tf_prefix: str = ""
     # the name of the model a pybullet body is (for contacts' names), or None
     model_of_body: Callable[[int], Optional[str]] = lambda body: None
+    # the model as Gazebo's interface shows it (model_structure.Structure), None unknown
+    structure: Any = None
+    # (force, torque) applied from outside to one of the model's links for the step that
+    # starts now: world axes, the torque about its centre of mass (external_forces)
+    applied_wrench: Callable[[str], Tuple[np.ndarray, np.ndarray]] = \
+        lambda body: (np.zeros(3), np.zeros(3))
 
 
 def resolve_topic(namespace: str, topic: str) -> str:
