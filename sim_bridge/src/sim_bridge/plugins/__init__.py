@@ -21,6 +21,7 @@ from sim_bridge.plugins.bumper import Bumper
 from sim_bridge.plugins.camera import Camera, DepthCamera, MultiCamera
 from sim_bridge.plugins.diff_drive import DiffDrive
 from sim_bridge.plugins.f3d import F3D
+from sim_bridge.plugins.ft_sensor import FTSensor
 from sim_bridge.plugins.gazebo_ros_imu import GazeboRosImu
 from sim_bridge.plugins.hector_gps import HectorGps
 from sim_bridge.plugins.hector_imu import HectorImu
@@ -40,6 +41,7 @@ MODEL_PLUGINS = {
     "libgazebo_ros_joint_state_publisher.so": JointStatePublisher,
     "libgazebo_ros_p3d.so": P3D,
     "libgazebo_ros_f3d.so": F3D,
+    "libgazebo_ros_ft_sensor.so": FTSensor,
     "libgazebo_ros_planar_move.so": PlanarMove,
     "libgazebo_ros_control.so": RosControl,
     "libgazebo_ros_imu.so": GazeboRosImu,
