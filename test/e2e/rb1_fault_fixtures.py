@@ -5,8 +5,9 @@ with one fault of the kinds students make, and the table says which of the guide
 
 Interface (used by ``test_course_grader_faults.py`` and the batch test):
 
-- ``FAULTS``: name -> ``Fault`` (``what`` the fault is, ``edits``, ``lost``: the item ids it
-  must lose, exactly; ``scenarios``: the grader's scenarios that touch those items, to pass
+- ``FAULTS``: name -> ``Fault`` (``what`` the fault is, ``edits``, ``scores``: the points
+  the items it touches must get, exactly, by the course's rubric (the others get full
+  marks); ``scenarios``: the grader's scenarios that touch those items, to pass
   to ``grade rb1 PATH --only``; ``scenario_limit``: seconds for ``--scenario-limit``, or None
   for the course's own limit).
 - ``make_fixture(repo, name, folder)``: writes fixture ``name`` into ``folder`` (created; it
@@ -28,7 +29,7 @@ from __future__ import annotations
 import os
 import shutil
 from dataclasses import dataclass
-from typing import Dict, FrozenSet, Optional, Tuple
+from typing import Dict, Optional, Tuple
 
 RB1_PACKAGES = ("my_rb1_description", "my_rb1_gazebo", "my_rb1_ros")
 FILES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "rb1_fault_fixtures")
@@ -89,9 +90,17 @@ class Delete:
 class Fault:
     what: str
     edits: Tuple
-    lost: FrozenSet[str]
+    scores: Dict[str, float]   # item id -> points it must get; items not named: full marks
     scenarios: Tuple[str, ...]
     scenario_limit: Optional[float] = None
+
+    def expected(self, items) -> Dict[str, float]:
+        """Points per item of ``items`` (course Items) this fault must get."""
+        return {item.id: self.scores.get(item.id, item.points) for item in items}
+
+
+def _none(items) -> Dict[str, float]:
+    return {item: 0.0 for item in items}
 
 
 def _read(name: str) -> str:
@@ -104,47 +113,52 @@ FAULTS: Dict[str, Fault] = {
         "front_laser_joint without the roll of pi: the laser stands upright",
         (Replace(URDF, '<origin xyz="0.25 0.0 0.075" rpy="3.141592653589793 0 0"/>',
                  '<origin xyz="0.25 0.0 0.075" rpy="0 0 0"/>'),),
-        frozenset({"display_links_tf"}), ("display",)),
+        # the display item's nine parts (TF, link names, five places, the laser's roll,
+        # base_link's height): the roll fails
+        {"display_links_tf": 2.0}, ("display",)),
     "spawned_outside_square": Fault(
         "spawn_model without -x/-y: the robot appears at the world's origin, outside the square",
         (Replace(LAUNCH, "-x $(arg x) -y $(arg y) ", ""),),
-        frozenset({"spawn_in_start_square"}), ("spawn",)),
+        {"spawn_in_start_square": 0.0}, ("spawn",)),   # 0.93 m out: beyond the scale's 0.3
     "wheels_misplaced": Fault(
         "both wheel joints 0.05 m forward of the body's centre (guide: x 0)",
         (Replace(URDF, '<origin xyz="0.0 -0.2 -0.15" rpy="0 0 0"/>',
                  '<origin xyz="0.05 -0.2 -0.15" rpy="0 0 0"/>'),
          Replace(URDF, '<origin xyz="0.0 0.2 -0.15" rpy="0 0 0"/>',
                  '<origin xyz="0.05 0.2 -0.15" rpy="0 0 0"/>')),
-        frozenset({"display_links_tf"}), ("display",)),
+        {"display_links_tf": 1.75}, ("display",)),   # two places of nine parts
     "mass_not_25kg": Fault(
-        "the body alone given the robot's 25 kg: 29 kg in all",
+        "the body alone given the robot's 25 kg: 29 kg in all (beyond the display item's "
+        "sentence: a note, no points lost)",
         (Replace(URDF, '<mass value="21.0"/>', '<mass value="25.0"/>'),),
-        frozenset({"display_links_tf"}), ("display",)),
+        {}, ("display",)),
     "rotate_by_time": Fault(
         "the rotation timed at a fixed speed instead of measured on /odom (no subscriber)",
         (Replace(NODE, '        rospy.Subscriber("odom", Odometry, self._on_odometry, '
                        'queue_size=10)\n', ""),
          Insert(NODE, MAIN_LINE, "rotate_by_the_clock.py.in")),
-        frozenset({"rotate_uses_odom"}), ("rotate",)),
+        {"rotate_uses_odom": 0.0}, ("rotate",)),
     "answers_before_turning": Fault(
         "answers success at once and does not turn",
         (Replace(NODE, "            return self._turn_by(degrees, start, watch)\n",
                  '            return f"success: rotated {degrees} degrees"\n'),),
-        frozenset({"rotate_degrees", "rotate_answers_success"}), ("rotate",)),
+        _none({"rotate_degrees", "rotate_answers_success"}), ("rotate",)),
     "turn_wraps_at_180": Fault(
         "the goal wrapped into (-180, 180]: 270 turns -90 and 360 does nothing",
         (Replace(NODE, TARGET_LINE,
                  "        target = start + math.remainder(math.radians(degrees), 2 * math.pi)\n"),),
-        frozenset({"rotate_degrees", "rotate_answers_success"}), ("rotate",)),
+        # -90 right; 270 turns -90 and 360 nothing (360 degrees off: no points, not done)
+        {"rotate_degrees": round(2.0 / 3, 4), "rotate_answers_success": round(1.0 / 3, 4)},
+        ("rotate",)),
     "degrees_as_radians": Fault(
         "the request's degrees used as radians (90 asks for 90 rad)",
         (Replace(NODE, TARGET_LINE, "        target = start + degrees\n"),),
-        frozenset({"rotate_degrees", "rotate_answers_success"}), ("rotate",)),
+        _none({"rotate_degrees", "rotate_answers_success"}), ("rotate",)),
     "no_success_message": Fault(
         "the answer says what was done but not 'success'",
         (Replace(NODE, '                    return (f"success: rotated {degrees} degrees',
                  '                    return (f"rotated {degrees} degrees'),),
-        frozenset({"rotate_answers_success"}), ("rotate",)),
+        {"rotate_answers_success": 0.0}, ("rotate",)),
     "cpp_rotate_service": Fault(
         "not a fault: the rotate service in C++ (rotate_service.cpp, built by catkin_make)",
         (Copy("rotate_service.cpp", "my_rb1_ros/src/rotate_service.cpp"),
@@ -160,11 +174,11 @@ FAULTS: Dict[str, Fault] = {
                  "  <depend>roscpp</depend>\n  <build_depend>tf2</build_depend>\n"
                  "  <build_depend>geometry_msgs</build_depend>\n"
                  "  <build_depend>nav_msgs</build_depend>\n")),
-        frozenset(), ("rotate",)),
+        {}, ("rotate",)),
     "does_not_build": Fault(
         "Rotate.srv's field type misspelt (in32): message generation fails, nothing builds",
         (Replace("my_rb1_ros/srv/Rotate.srv", "int32 degrees", "in32 degrees"),),
-        ALL_ITEMS, ALL_SCENARIOS),
+        _none(ALL_ITEMS), ALL_SCENARIOS),
     "node_hangs": Fault(
         "the service never answers (waits for an event nothing sets) and the node ignores "
         "SIGINT and SIGTERM",
@@ -178,7 +192,7 @@ FAULTS: Dict[str, Fault] = {
                  '    rospy.init_node("rotate_service")\n'
                  "    signal.signal(signal.SIGINT, signal.SIG_IGN)\n"
                  "    signal.signal(signal.SIGTERM, signal.SIG_IGN)\n")),
-        ROTATE_ITEMS, ("rotate", "scan"), HANG_LIMIT),
+        _none(ROTATE_ITEMS), ("rotate", "scan"), HANG_LIMIT),
 }
 
 

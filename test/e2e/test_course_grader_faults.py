@@ -1,8 +1,8 @@
 """course_grader on the faulty RB1 submissions of rb1_fault_fixtures, graded as a teaching
 assistant grades a class: ``rosrun course_grader grade rb1 DIR/* --jobs 2 --only <scenarios>
---csv scores.csv``, one batch per set of scenarios the faults touch. Every fixture must lose
-exactly its table row's items (the CSV's scores and its report.json) with its fault's figure
-in the evidence; the C++ rotate service scores full marks; the submission that does not
+--csv scores.csv``, one batch per set of scenarios the faults touch. Every fixture must get
+exactly its table row's points by the course's rubric (the CSV's scores and its report.json)
+with its fault's figure in the evidence; the C++ rotate service scores full marks; the submission that does not
 build scores 0 everywhere with its build error. make soak grades the same fixtures one at a
 time (test/soak/test_course_grader_faults_one_at_a_time.py) against the same table, so the
 batch's scores are the one-at-a-time scores.
@@ -112,20 +112,19 @@ def test_every_fixture_is_graded_in_exactly_one_batch():
     assert sorted(placed) == sorted(FAULTS)
     for name, (scenarios, _, fixtures) in BATCHES.items():
         for fixture in fixtures:  # the batch grades every scenario the fault touches
-            assert not scenarios or set(FAULTS[fixture].lost) <= {
+            assert not scenarios or set(FAULTS[fixture].scores) <= {
                 item.id for s in scenarios for item in course_file.load("rb1").items_of(s)}
 
 
 @pytest.mark.parametrize("fixture", list(FAULTS))
-def test_a_fault_loses_exactly_its_items(batches, fixture):
+def test_a_fault_gets_exactly_its_points(batches, fixture):
     batch = batches[batch_of(fixture)]
     course = course_file.load("rb1")
     graded = [item for item in course.items
               if not batch.scenarios or item.scenario in batch.scenarios]
     row = batch.rows[fixture]
     awarded = {item.id: float(row[item.id]) for item in course.items if row[item.id] != ""}
-    expected = {item.id: 0.0 if item.id in FAULTS[fixture].lost else item.points
-                for item in graded}
+    expected = FAULTS[fixture].expected(graded)
     items = batch.items(fixture)
     evidence = "\n".join(f"  {i}: {item['awarded']:g}/{item['points']:g}  {item['evidence']}"
                          for i, item in sorted(items.items()))

@@ -173,6 +173,7 @@ class Outcome:
     seconds: float = 0.0
     reason: str = ""
     expected: Dict[str, float] = field(default_factory=dict)  # item id -> points, items to grade
+    marks: Dict[str, str] = field(default_factory=dict)  # item id -> "review" or "platform"
 
     def zero(self, status: str, reason: str) -> None:
         """Not graded (refused, crashed, killed): 0 on every item it was to be graded on."""
@@ -213,8 +214,10 @@ def read_outcome(outcome: Outcome, out: str, exit_status: Optional[int], log_pat
     if exit_status == 0 and os.path.isfile(report_path):
         with open(report_path, encoding="utf-8") as stream:
             report = json.load(stream)
-        outcome.status = "graded"
+        outcome.status = "incomplete" if report.get("incomplete") else "graded"
         outcome.awarded = {item["id"]: float(item["awarded"]) for item in report["items"]}
+        outcome.marks = {item["id"]: item["mark"] for item in report["items"]
+                         if item.get("mark")}
         outcome.possible = float(report["possible"])
         return
     tail = " | ".join(_log_tail(log_path, REASON_LINES))
@@ -320,14 +323,19 @@ def _points(value: float) -> str:
 
 def csv_header(course: Course) -> List[str]:
     return ["path", "name", *[item.id for item in course.items], "total", "possible",
-            "seconds", "status", "reason"]
+            "seconds", "status", "review", "platform", "reason"]
 
 
 def csv_row(course: Course, outcome: Outcome) -> List[str]:
+    """Points per item; ``review`` and ``platform`` list the items so marked."""
     cells = [_points(outcome.awarded[item.id]) if item.id in outcome.awarded else ""
              for item in course.items]
+    marked = {mark: " ".join(item.id for item in course.items
+                             if outcome.marks.get(item.id) == mark)
+              for mark in ("review", "platform")}
     return [outcome.path, outcome.name, *cells, _points(outcome.total),
-            _points(outcome.possible), f"{outcome.seconds:.1f}", outcome.status, outcome.reason]
+            _points(outcome.possible), f"{outcome.seconds:.1f}", outcome.status,
+            marked["review"], marked["platform"], outcome.reason]
 
 
 def write_csv(path: str, course: Course, outcomes: List[Outcome]) -> None:
@@ -345,11 +353,11 @@ def write_csv(path: str, course: Course, outcomes: List[Outcome]) -> None:
 def wanted(args) -> bool:
     """Batch grading: several paths, or any batch option given."""
     return len(args.path) > 1 or any(getattr(args, option) is not None
-                                     for option in ("jobs", "shard", "csv", "limit"))
+                                     for option in ("jobs", "shard", "csv", "limit", "summary"))
 
 
 # options the batch itself handles; every other option given is passed on to each child
-BATCH_OPTIONS = {"course", "path", "out", "jobs", "shard", "csv", "limit", "help"}
+BATCH_OPTIONS = {"course", "path", "out", "jobs", "shard", "csv", "limit", "summary", "help"}
 
 
 def forwarded_options(parser, args) -> List[str]:
@@ -412,9 +420,37 @@ def main(parser, args, course: Course, out: str) -> int:
     print()
     print(summary(outcomes))
     print()
+    if args.summary:
+        print(distribution(course, outcomes))
+        print()
     print(f"grade: scores written: {csv_path}")
     print(f"grade: {len(outcomes)} submissions in {time.monotonic() - started:.0f} s")
     return 0
+
+
+def distribution(course: Course, outcomes: List[Outcome]) -> str:
+    """The class per item: how many got full, part and no marks, the mean, and how many
+    are marked review or platform. An item that nobody passes is flagged: the grader's
+    fault until shown otherwise."""
+    rows = []
+    for item in course.items:
+        scores = [o.awarded[item.id] for o in outcomes if item.id in o.awarded]
+        if not scores:
+            continue
+        full = sum(score >= item.points for score in scores)
+        none = sum(score == 0 for score in scores)
+        marks = [o.marks.get(item.id) for o in outcomes]
+        flag = "  <- nobody has full marks: check the rubric" if full == 0 and \
+            len(scores) > 1 else ""
+        rows.append((item.id, f"{_points(item.points)}", f"{full}", f"{len(scores) - full - none}",
+                     f"{none}", f"{sum(scores) / len(scores):.2f}",
+                     f"{marks.count('review')}", f"{marks.count('platform')}", flag))
+    header = ("item", "points", "full", "part", "none", "mean", "review", "platform", "")
+    widths = [max(len(str(row[i])) for row in rows + [header]) for i in range(8)]
+    lines = ["  ".join(f"{cell:<{w}}" for cell, w in zip(header, widths)).rstrip()]
+    lines += ["  ".join(f"{cell:<{w}}" for cell, w in zip(row, widths)).rstrip() + row[8]
+              for row in rows]
+    return "\n".join(lines)
 
 
 def summary(outcomes: List[Outcome]) -> str:

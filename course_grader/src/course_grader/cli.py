@@ -73,6 +73,9 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--limit", type=positive_seconds, metavar="SECONDS",
                         help="wall-clock limit per submission, after which it is killed "
                              "(default: from the course's limits)")
+    parser.add_argument("--summary", action="store_true", default=None,
+                        help="after a batch, the class per item: full, part and no marks, "
+                             "the mean, the items marked review or platform")
     return parser
 
 

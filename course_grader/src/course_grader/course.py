@@ -11,6 +11,9 @@ from typing import Any, Dict, List, Tuple
 
 import yaml
 
+from course_grader import rubric as rubric_file
+from course_grader.rubric import Rubric
+
 CONFIG_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.abspath(__file__)))), "config")
 
@@ -21,13 +24,15 @@ class CourseError(ValueError):
 
 @dataclass(frozen=True)
 class Item:
-    """One graded item of the guide: points for one thing the student must show."""
+    """One graded item of the guide: points for one thing the student must show, scored
+    by its rubric (the guide's sentence, notes, deductions, scale)."""
 
     id: str
     task: int
     title: str
     points: float
     scenario: str
+    rubric: Rubric = Rubric()
 
 
 @dataclass(frozen=True)
@@ -138,7 +143,8 @@ def parse(path: str) -> Course:
         data = yaml.safe_load(stream)
     try:
         items = [Item(id=str(i["id"]), task=int(i["task"]), title=str(i["title"]),
-                      points=float(i["points"]), scenario=str(i["scenario"]))
+                      points=float(i["points"]), scenario=str(i["scenario"]),
+                      rubric=rubric_file.parse(i, f"item '{i.get('id')}'"))
                  for i in data["items"]]
         course = Course(name=str(data["name"]), title=str(data["title"]),
                         packages=[str(p) for p in data["packages"]],
@@ -160,6 +166,15 @@ def parse(path: str) -> Course:
     ids = [item.id for item in items]
     if len(set(ids)) != len(ids):
         raise CourseError(f"{path}: item ids repeat: {ids}")
+    unquoted = [item.id for item in items if not item.rubric.guide]
+    if unquoted:  # an item scores what the guide's sentence says, so it quotes it
+        raise CourseError(f"{path}: items {unquoted} quote no sentence of the guide "
+                          "('guide:')")
+    for item in items:
+        taken = sum(d.points for d in item.rubric.deductions)
+        if taken > item.points:
+            raise CourseError(f"{path}: item '{item.id}' declares deductions of {taken:g} "
+                              f"points, more than its {item.points:g}")
     _check_scenarios(course, path)
     unknown = [s for s in course.long_scenarios if s not in course.scenarios()]
     if unknown:

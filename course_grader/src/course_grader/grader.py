@@ -200,10 +200,10 @@ def add_urdf_evidence(course: Course, results: List[ItemResult], description_dir
         for result in (display, wheels):
             if result is not None:
                 result.checks.append(Check("URDF readable", False, str(error)))
-                result.awarded = 0.0
+                result.rescore()
         return
     if display is not None:
-        display.checks += [urdf_checks.names(model, course.urdf),
+        display.checks += [*urdf_checks.names(model, course.urdf),
                            *urdf_checks.placements(model, course.urdf),
                            urdf_checks.total_mass(model, course.urdf)]
         display.notes += [f"{'pass' if c.passed else 'FAIL'}: {c.evidence}"
@@ -212,7 +212,7 @@ def add_urdf_evidence(course: Course, results: List[ItemResult], description_dir
         wheels.checks.append(urdf_checks.wheel_joints(model, course.urdf))
     for result in (display, wheels):
         if result is not None:
-            result.awarded = judge(result.item, result.checks).awarded
+            result.rescore()
 
 
 def grade(course: Course, path: str, out: str, platform_setup: str = PLATFORM_SETUP,

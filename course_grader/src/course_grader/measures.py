@@ -31,6 +31,14 @@ def inside(value: float, bounds: Sequence[float]) -> bool:
     return bounds[0] <= value <= bounds[1]
 
 
+def distance_outside(x: float, y: float, bounds_x: Sequence[float],
+                     bounds_y: Sequence[float]) -> float:
+    """How far the point (x, y) is from the rectangle; 0 inside it."""
+    dx = max(bounds_x[0] - x, 0.0, x - bounds_x[1])
+    dy = max(bounds_y[0] - y, 0.0, y - bounds_y[1])
+    return math.hypot(dx, dy)
+
+
 def thin(samples: Sequence, most: int) -> List:
     """At most ``most`` of ``samples``, evenly spread by index, the first and the last kept
     (a plot needs no more points than it is wide)."""
@@ -84,7 +92,9 @@ class Rotation:
         text = self.answer.lower()
         return "success" in text and "fail" not in text
 
-    def answered_when_done(self, tolerance: float, lag: float) -> bool:
-        """Success claimed, the turn really done, and not before the robot stopped."""
-        return (self.says_success() and self.turned_ok(tolerance)
+    def answered_when_done(self, lag: float, done_within: float) -> bool:
+        """Success claimed once the turn was done: the robot turned within ``done_within``
+        degrees of the request (how close is the other item's to score) and had stopped,
+        or stopped no more than ``lag`` s after the answer."""
+        return (self.says_success() and abs(self.error()) < done_within
                 and self.answered_at >= self.stopped_at - lag)

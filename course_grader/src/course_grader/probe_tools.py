@@ -3,7 +3,7 @@ publishes and subscribes, and robot_description parsed."""
 from __future__ import annotations
 
 import time
-from typing import Callable, Dict, List
+from typing import Callable, Dict, List, Optional
 
 import rosgraph
 import rospy
@@ -46,8 +46,12 @@ def wait_for_simulated_time(timeout: float) -> bool:
         return False
 
 
-def check(name: str, passed: bool, evidence: str) -> Dict:
-    return {"name": name, "passed": bool(passed), "evidence": evidence}
+def check(name: str, passed: bool, evidence: str, value: Optional[float] = None) -> Dict:
+    """A check's JSON form; ``value``: the quantity measured, which an item's scale reads."""
+    answer = {"name": name, "passed": bool(passed), "evidence": evidence}
+    if value is not None:
+        answer["value"] = float(value)
+    return answer
 
 
 def system_state():

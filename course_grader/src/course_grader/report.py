@@ -19,19 +19,35 @@ def _points(value: float) -> str:
     return f"{value:g}"
 
 
+def _awarded(result) -> str:
+    """Points awarded, with the item's mark: "1.6 review", "0 platform"."""
+    return _points(result.awarded) + (f" {result.mark}" if result.mark else "")
+
+
 def table(report: Report) -> str:
-    """The terminal table, then each failed item's log lines."""
-    rows = [(f"{r.item.task}. {r.item.title}", _points(r.item.points), _points(r.awarded),
+    """The terminal table (a mark after the points: review, platform), then each item's
+    deductions and reasons for review, and each failed item's log lines."""
+    rows = [(f"{r.item.task}. {r.item.title}", _points(r.item.points), _awarded(r),
              r.evidence()) for r in report.results]
     width = max([len("item")] + [len(row[0]) for row in rows])
-    lines = [f"{'item':<{width}}  points  awarded  evidence",
-             f"{'-' * width}  ------  -------  {'-' * EVIDENCE_WIDTH}"]
+    column = max([len("awarded")] + [len(row[2]) for row in rows])
+    lines = [f"{'item':<{width}}  points  {'awarded':<{column}}  evidence",
+             f"{'-' * width}  ------  {'-' * column}  {'-' * EVIDENCE_WIDTH}"]
     for name, points, awarded, evidence in rows:
         wrapped = textwrap.wrap(evidence, EVIDENCE_WIDTH) or [""]
-        lines.append(f"{name:<{width}}  {points:>6}  {awarded:>7}  {wrapped[0]}")
-        lines += [f"{'':<{width}}  {'':>6}  {'':>7}  {more}" for more in wrapped[1:]]
+        lines.append(f"{name:<{width}}  {points:>6}  {awarded:<{column}}  {wrapped[0]}")
+        lines += [f"{'':<{width}}  {'':>6}  {'':<{column}}  {more}" for more in wrapped[1:]]
     lines.append(f"{'total':<{width}}  {_points(report.possible):>6}  "
-                 f"{_points(report.awarded):>7}")
+                 f"{_points(report.awarded):<{column}}"
+                 + ("  incomplete: a platform fault kept items from being graded"
+                    if report.incomplete else ""))
+    for result in report.results:
+        said = ([f"  - deducted {_points(points)}: {rule}: {why}"
+                 for rule, points, why in result.deducted]
+                + [f"  - review: {why}" for why in result.review]
+                + ([f"  - platform: {result.platform}"] if result.platform else []))
+        if said:
+            lines += ["", f"'{result.item.title}':", *said]
     for result in report.results:
         if result.log:
             lines.append("")
@@ -43,7 +59,9 @@ def table(report: Report) -> str:
 def markdown(report: Report) -> str:
     out: List[str] = [f"# {report.course.title}: grading report", "",
                       f"- submission: `{report.submission}`",
-                      f"- awarded: **{_points(report.awarded)} of {_points(report.possible)}**",
+                      f"- awarded: **{_points(report.awarded)} of {_points(report.possible)}**"
+                      + (" (incomplete: a platform fault kept items from being graded)"
+                         if report.incomplete else ""),
                       f"- grading took {report.seconds:.0f} s"]
     if report.build:
         out.append(f"- build: {report.build}")
@@ -53,12 +71,21 @@ def markdown(report: Report) -> str:
     for r in report.results:
         evidence = r.evidence().replace("|", "\\|")
         out.append(f"| {r.item.task} | {r.item.title} | {_points(r.item.points)} | "
-                   f"{_points(r.awarded)} | {evidence} |")
+                   f"{_awarded(r)} | {evidence} |")
     for r in report.results:
         out += ["", f"## {r.item.task}. {r.item.title} ({_points(r.awarded)} of "
-                    f"{_points(r.item.points)})", ""]
-        out += [f"- {'pass' if c.passed else 'FAIL'}: {c.name}: {c.evidence}" for c in r.checks]
-        out += [f"- note: {note}" for note in r.notes]
+                    f"{_points(r.item.points)})", "", f"> {r.item.rubric.guide}", ""]
+        if r.item.rubric.scale:
+            out.append(f"- scale: {r.item.rubric.scale.describe()}")
+        shares = dict(r.parts)
+        for c in r.checks:
+            share = shares.get(c.name)
+            scored = "" if share is None or share in (0.0, 1.0) else f" ({share:.0%} of its part)"
+            out.append(f"- {'pass' if c.passed else 'FAIL'}: {c.name}: {c.evidence}{scored}")
+        out += [f"- deducted {_points(points)}: {rule}: {why}" for rule, points, why in r.deducted]
+        out += [f"- **review**: {why}" for why in r.review]
+        out += [f"- **platform**: {r.platform}"] if r.platform else []
+        out += [f"- note: {note}" for note in r.beyond + r.notes]
         out += [f"- killed after the scenario's stop: pid {k.pid}: `{k.command}`"
                 for k in r.killed]
         for figure in r.figures:

@@ -6,24 +6,31 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass, field
 from typing import Dict, Iterable, List, Optional, Tuple
 
+from course_grader import rubric
 from course_grader.course import Course, Item
 
 
 @dataclass
 class Check:
-    """One measured condition: passed or not, and what was measured (one line)."""
+    """One measured condition: passed or not, and what was measured (one line);
+    ``value``, when the check measured a quantity (an error in degrees, a distance), is the
+    figure the item's scale reads."""
 
     name: str
     passed: bool
     evidence: str
+    value: Optional[float] = None
 
     def __post_init__(self):
         self.passed = bool(self.passed)   # numpy's bool_ is not JSON
         self.evidence = str(self.evidence)
+        self.value = None if self.value is None else float(self.value)
 
     @staticmethod
     def from_dict(data: Dict) -> "Check":
-        return Check(str(data["name"]), bool(data["passed"]), str(data["evidence"]))
+        value = data.get("value")
+        return Check(str(data["name"]), bool(data["passed"]), str(data["evidence"]),
+                     None if value is None else float(value))
 
 
 @dataclass
@@ -61,10 +68,32 @@ class ItemResult:
     seconds: float = 0.0                             # wall time of the scenario
     figures: List[Figure] = field(default_factory=list)
     killed: List[Killed] = field(default_factory=list)   # the scenario's leftovers, not scored
+    # what the rubric made of the checks (see rescore)
+    parts: List[Tuple[str, float]] = field(default_factory=list)
+    deducted: List[Tuple[str, float, str]] = field(default_factory=list)  # rule, points, why
+    review: List[str] = field(default_factory=list)      # why a teaching assistant should look
+    beyond: List[str] = field(default_factory=list)      # checks beyond the guide's sentence
+    # a fault of the grading platform, not of the submission: nothing scored against it
+    platform: str = ""
 
     @property
     def passed(self) -> bool:
         return self.awarded >= self.item.points
+
+    @property
+    def mark(self) -> str:
+        """"platform", "review" or "" (the table's and the CSV's mark)."""
+        return "platform" if self.platform else ("review" if self.review else "")
+
+    def rescore(self) -> "ItemResult":
+        """Scores the checks by the item's rubric: its parts' mean share of the points,
+        less its deductions, never below 0; nothing measured scores nothing."""
+        scored = rubric.score(self.item.rubric, self.checks)
+        self.parts, self.review, self.beyond = scored.parts, scored.review, scored.notes
+        self.deducted = [(d.rule, d.points, evidence) for d, evidence in scored.deducted]
+        taken = sum(points for _, points, _ in self.deducted)
+        self.awarded = round(max(0.0, self.item.points * scored.share - taken), 4)
+        return self
 
     def evidence(self) -> str:
         measured = "; ".join(c.evidence for c in self.checks) or "not measured"
@@ -77,11 +106,12 @@ class ItemResult:
 
 def judge(item: Item, checks: Iterable[Check], notes: Iterable[str] = (),
           log: Iterable[str] = (), seconds: float = 0.0) -> ItemResult:
-    """All-or-nothing: the item's points when it has checks and every one passed."""
-    checks = list(checks)
-    awarded = item.points if checks and all(c.passed for c in checks) else 0.0
-    failed = awarded < item.points
-    return ItemResult(item, awarded, checks, list(notes), list(log) if failed else [], seconds)
+    """The item scored by its rubric (see ItemResult.rescore); the log is kept only when
+    points were lost."""
+    result = ItemResult(item, 0.0, list(checks), list(notes), [], seconds).rescore()
+    if not result.passed:
+        result.log = list(log)
+    return result
 
 
 def failed_item(item: Item, reason: str, log: Iterable[str] = (),
@@ -108,6 +138,11 @@ class Report:
     def possible(self) -> float:
         return sum(r.item.points for r in self.results)
 
+    @property
+    def incomplete(self) -> bool:
+        """Some item could not be graded for a fault of the platform, not the submission."""
+        return any(r.platform for r in self.results)
+
     def result(self, item_id: str) -> ItemResult:
         for result in self.results:
             if result.item.id == item_id:
@@ -128,10 +163,19 @@ class Report:
             "seconds": round(self.seconds, 1),
             "build": self.build,
             "notes": self.notes,
+            "incomplete": self.incomplete,
             "items": [{
                 "id": r.item.id, "task": r.item.task, "title": r.item.title,
-                "points": r.item.points, "awarded": r.awarded, "evidence": r.evidence(),
-                "checks": [asdict(c) for c in r.checks], "notes": r.notes, "log": r.log,
+                "guide": r.item.rubric.guide,
+                "points": r.item.points, "awarded": r.awarded, "mark": r.mark,
+                "evidence": r.evidence(),
+                "checks": [asdict(c) for c in r.checks],
+                "parts": [{"check": name, "share": round(share, 4)} for name, share in r.parts],
+                "scale": r.item.rubric.scale.describe() if r.item.rubric.scale else None,
+                "deductions": [{"rule": rule, "points": points, "evidence": evidence}
+                               for rule, points, evidence in r.deducted],
+                "review": r.review, "platform": r.platform, "beyond_the_guide": r.beyond,
+                "notes": r.notes, "log": r.log,
                 "seconds": round(r.seconds, 1),
                 "figures": [f.file for f in r.figures if f.file],
             } for r in self.results],

@@ -93,20 +93,36 @@ def test_csv_columns_and_rows(rb1, tmp_path):
     ids = [item.id for item in rb1.items]
     full = batch.Outcome("subs/a", "a", "graded", {i: item.points for i, item in
                                                    zip(ids, rb1.items)}, rb1.total_points, 41.26)
-    only = batch.Outcome("subs/b", "b", "graded", {"rotate_degrees": 0.0, "rotate_uses_odom": 1.0,
-                                                   "rotate_answers_success": 0.0}, 4.0, 15.0)
+    only = batch.Outcome("subs/b", "b", "graded", {"rotate_degrees": 1.6, "rotate_uses_odom": 1.0,
+                                                   "rotate_answers_success": 0.0}, 4.0, 15.0,
+                         marks={"rotate_degrees": "review"})
     killed = batch.Outcome("subs/c", "c", expected={"scan_readable": 0.75}, seconds=950.0)
     killed.zero("killed", "still running after ...")
     path = str(tmp_path / "out" / "scores.csv")
     batch.write_csv(path, rb1, [full, only, killed])
     header, *body = rows(path)
-    assert header == ["path", "name", *ids, "total", "possible", "seconds", "status", "reason"]
+    assert header == ["path", "name", *ids, "total", "possible", "seconds", "status", "review",
+                      "platform", "reason"]
     assert body[0] == ["subs/a", "a", "2.25", "0.75", "1.5", "0.75", "0.75", "2", "1", "1",
-                       "10", "10", "41.3", "graded", ""]
+                       "10", "10", "41.3", "graded", "", "", ""]
     assert body[1][2:7] == ["", "", "", "", ""]          # not graded (--only): empty, not 0
-    assert body[1][7:12] == ["0", "1", "0", "1", "4"]
+    assert body[1][7:12] == ["1.6", "1", "0", "2.6", "4"]
+    assert body[1][13:16] == ["graded", "rotate_degrees", ""]   # marked for review
     assert body[2][2:10] == ["", "", "", "", "0", "", "", ""]
-    assert body[2][10:] == ["0", "0.75", "950.0", "killed", "still running after ..."]
+    assert body[2][10:] == ["0", "0.75", "950.0", "killed", "", "", "still running after ..."]
+
+
+def test_the_class_distribution_flags_an_item_nobody_passes(rb1):
+    full = {item.id: item.points for item in rb1.items}
+    outcomes = [batch.Outcome(f"s/{n}", n, "graded", dict(full, spawn_in_start_square=0.0,
+                                                         rotate_degrees=points), 10.0)
+                for n, points in (("a", 2.0), ("b", 1.5), ("c", 0.0))]
+    outcomes[1].marks = {"rotate_degrees": "review"}
+    table = batch.distribution(rb1, outcomes).splitlines()
+    (rotate,) = [line for line in table if line.startswith("rotate_degrees")]
+    assert rotate.split()[1:8] == ["2", "1", "1", "1", "1.17", "1", "0"]
+    (spawn,) = [line for line in table if line.startswith("spawn_in_start_square")]
+    assert spawn.split()[2:5] == ["0", "0", "3"] and "nobody has full marks" in spawn
 
 
 def test_outcome_read_from_the_child(rb1, tmp_path):

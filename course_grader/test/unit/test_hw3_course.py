@@ -60,7 +60,7 @@ title: bad
 packages: [p]
 limits: {build: 1}
 commands: {go: [p, go.launch]}
-items: [{id: a, task: 1, title: a, points: 1, scenario: s}]
+items: [{id: a, task: 1, title: a, guide: "Do a.", points: 1, scenario: s}]
 """
 
 

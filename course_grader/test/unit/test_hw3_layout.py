@@ -180,7 +180,7 @@ def test_the_error_code_is_read_from_the_response():
 
 def test_the_layout_runner_through_the_graders_hook(tmp_path):
     """grader.runner_results runs the course file's runner and judges its items: our
-    packages score both layout items; without arm_move, the layout item alone is lost."""
+    packages score both layout items; without arm_move, the layout item loses that part."""
     from course_grader import grader
     from course_grader.submission import Staged
     hw3 = course_file.load("me495_hw3")
@@ -195,5 +195,6 @@ def test_the_layout_runner_through_the_graders_hook(tmp_path):
     staged = Staged(str(tmp_path), {"diff_drive": str(src / "diff_drive")}, ["arm_move"])
     context = grader.RunnerContext(dict(os.environ), str(tmp_path), staged, str(tmp_path / "log"))
     results = {r.item.id: r for r in grader.runner_results(hw3, "layout", context)}
-    assert results["layout"].awarded == 0 and results["xacro_yaml_gazebo"].awarded == 1.0
+    # the layout's parts: diff_drive's folders, nodes, files, and arm_move: three of four
+    assert results["layout"].awarded == 0.375 and results["xacro_yaml_gazebo"].awarded == 1.0
     assert "the submission has no arm_move" in results["layout"].evidence()
