@@ -43,18 +43,40 @@ def layout(ddrive: Optional[str], arm: Optional[str], spec: Dict) -> List[Dict]:
         checks.append(check("diff_drive's folders", not missing,
                             f"diff_drive has {', '.join(spec['ddrive_folders'])}" if not missing
                             else f"diff_drive lacks the folder(s) {', '.join(missing)}"))
-        nodes = os.path.join(ddrive, "nodes")
-        executables = [n for n in sorted(os.listdir(nodes)) if os.access(
-            os.path.join(nodes, n), os.X_OK)] if os.path.isdir(nodes) else []
-        checks.append(check("a node in nodes/", bool(executables),
-                            f"nodes/: {', '.join(executables)}" if executables
-                            else "no executable file in diff_drive/nodes"))
+        runnable = runnable_nodes(ddrive)
+        checks.append(check("a node in nodes/", bool(runnable),
+                            f"nodes/: {', '.join(runnable)}" if runnable
+                            else "no file in diff_drive/nodes that rosrun can run (executable, "
+                                 "or installed by catkin_install_python)"))
         checks.append(_files_present("diff_drive", ddrive, spec["ddrive_files"]))
     if arm is None:
         checks.append(check("arm_move present", False, "the submission has no arm_move"))
     else:
         checks.append(_files_present("arm_move", arm, spec["arm_files"]))
     return checks
+
+
+# the files catkin_install_python installs (with a relay in devel that runs them, so they run
+# without the executable bit): its PROGRAMS, up to its DESTINATION
+INSTALL_PYTHON = re.compile(r"catkin_install_python\s*\(\s*PROGRAMS\s+(.*?)\s*DESTINATION",
+                            re.DOTALL | re.IGNORECASE)
+
+
+def runnable_nodes(package: str) -> List[str]:
+    """The files of ``package``'s nodes/ that ``rosrun`` runs: executable, or installed by
+    ``catkin_install_python`` (whose devel relay runs a script without the executable bit;
+    a student's README says ``rosrun``, and it runs)."""
+    nodes = os.path.join(package, "nodes")
+    if not os.path.isdir(nodes):
+        return []
+    cmake = os.path.join(package, "CMakeLists.txt")
+    text = re.sub(r"#[^\n]*", "", _read(cmake)) if os.path.isfile(cmake) else ""
+    relayed = {os.path.normpath(p) for group in INSTALL_PYTHON.findall(text)
+               for p in group.split()}
+    return [name for name in sorted(os.listdir(nodes))
+            if os.path.isfile(os.path.join(nodes, name))
+            and (os.access(os.path.join(nodes, name), os.X_OK)
+                 or os.path.normpath(f"nodes/{name}") in relayed)]
 
 
 def _files_present(package: str, folder: str, files: List[str]) -> Dict:

@@ -55,16 +55,35 @@ def test_our_packages_pass(packages, spec):
 def test_missing_folder_node_and_files_are_named(packages, spec):
     ddrive, arm = packages
     shutil.rmtree(os.path.join(ddrive, "worlds"))
-    os.chmod(os.path.join(ddrive, "nodes", "flip"), 0o644)
+    for node in os.listdir(os.path.join(ddrive, "nodes")):
+        os.chmod(os.path.join(ddrive, "nodes", node), 0o644)
+    cmake = os.path.join(ddrive, "CMakeLists.txt")
+    with open(cmake, encoding="utf-8") as stream:
+        text = stream.read()
+    with open(cmake, "w", encoding="utf-8") as stream:
+        stream.write(text.replace("catkin_install_python", "# catkin_install_python"))
     os.remove(os.path.join(ddrive, "launch", "ddrive_rviz.launch"))
     os.remove(os.path.join(arm, "test", "arm.test"))
     reasons = failed(layout_checks.layout(ddrive, arm, spec))
     assert reasons == ["diff_drive lacks the folder(s) worlds",
-                       "no executable file in diff_drive/nodes",
+                       "no file in diff_drive/nodes that rosrun can run (executable, or "
+                       "installed by catkin_install_python)",
                        "diff_drive lacks launch/ddrive_rviz.launch",
                        "arm_move lacks test/arm.test"]
     assert failed(layout_checks.layout(None, None, spec)) == [
         "the submission has no diff_drive", "the submission has no arm_move"]
+
+
+def test_a_node_without_the_executable_bit_runs_through_catkins_relay(packages, spec):
+    ddrive, _ = packages
+    with open(os.path.join(ddrive, "CMakeLists.txt"), "w", encoding="utf-8") as stream:
+        stream.write("cmake_minimum_required(VERSION 3.0.2)\nproject(diff_drive)\n"
+                     "catkin_install_python(\n  PROGRAMS\n    nodes/flip  # the flip routine\n"
+                     "  DESTINATION ${CATKIN_PACKAGE_BIN_DESTINATION})\n")
+    for node in os.listdir(os.path.join(ddrive, "nodes")):
+        os.chmod(os.path.join(ddrive, "nodes", node), 0o644)
+    assert layout_checks.runnable_nodes(ddrive) == ["flip"]
+    assert failed(layout_checks.layout(ddrive, None, spec)) == ["the submission has no arm_move"]
 
 
 def test_numbers_written_into_the_xacro_fail_the_yaml_check(packages, spec):
