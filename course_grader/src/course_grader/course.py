@@ -47,6 +47,9 @@ class ScenarioSpec:
     probe: str = ""
     runner: str = ""
     display: bool = False
+    # a world its launch file starts paused is unpaused before the probe, as the assignment
+    # tells students ("press play"); false where starting paused is what is graded
+    unpause: bool = True
 
 
 # the report's pictures when the course file has no ``report`` section: the rviz screenshot
@@ -89,6 +92,9 @@ class Course:
     # scenarios started first when several run at once (--scenario-jobs): the long ones, so
     # that the short ones run beside them instead of after them
     long_scenarios: List[str] = field(default_factory=list)
+    # an argument of a command that a submission's launch file may not declare -> (package,
+    # a word of the node's name): the node that starts that part by hand instead
+    by_hand: Dict[str, Tuple[str, str]] = field(default_factory=dict)
 
     @property
     def total_points(self) -> float:
@@ -159,7 +165,9 @@ def parse(path: str) -> Course:
                                        for k, v in data.get("headless_args",
                                                             DEFAULT_HEADLESS_ARGS).items()},
                         report=_report_settings(data.get("report", {})),
-                        long_scenarios=[str(s) for s in data.get("long_scenarios", [])])
+                        long_scenarios=[str(s) for s in data.get("long_scenarios", [])],
+                        by_hand={str(k): (str(v[0]), str(v[1]))
+                                 for k, v in data.get("by_hand", {}).items()})
     except (KeyError, TypeError, ValueError, IndexError) as error:
         raise CourseError(f"{path}: malformed course file ({type(error).__name__}: {error})") \
             from error
@@ -201,14 +209,14 @@ def _report_settings(data: Dict[str, Any]) -> Dict[str, Any]:
 def _scenario_specs(data: Dict[str, Any]) -> Dict[str, ScenarioSpec]:
     specs = {}
     for name, spec in data.items():
-        unknown = set(spec) - {"commands", "ready", "probe", "runner", "display"}
+        unknown = set(spec) - {"commands", "ready", "probe", "runner", "display", "unpause"}
         if unknown:
             raise ValueError(f"scenario '{name}' has unknown keys {sorted(unknown)}")
         specs[str(name)] = ScenarioSpec(
             commands=tuple(str(c) for c in spec.get("commands", [])),
             ready={str(k): str(v) for k, v in spec.get("ready", {}).items()},
             probe=str(spec.get("probe", "")), runner=str(spec.get("runner", "")),
-            display=bool(spec.get("display", False)))
+            display=bool(spec.get("display", False)), unpause=bool(spec.get("unpause", True)))
     return specs
 
 

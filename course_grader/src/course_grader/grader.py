@@ -9,9 +9,10 @@ import tempfile
 import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
-from typing import Callable, Dict, List, Optional
+from typing import Callable, Dict, List, Optional, Tuple
 
-from course_grader import plots, ros_run, screenshot, submission, urdf_checks
+from course_grader import (instructions, layout_checks, plots, ros_run, screenshot, submission,
+                           urdf_checks)
 from course_grader.course import Course, CourseError, ScenarioSpec, scenario_spec
 from course_grader.results import Check, Figure, ItemResult, Report, failed_item, judge
 from urdf_tools import UrdfError
@@ -20,15 +21,61 @@ PACKAGE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__
 REPO = os.path.dirname(PACKAGE_DIR)
 PLATFORM_SETUP = os.path.join(REPO, ".ws", "platform", "devel", "setup.bash")
 
+def _declared(env: Dict[str, str], package: str, launch_file: str) -> List[str]:
+    """The arguments the submission's launch file declares."""
+    found = submission.sourced_find(env, package)
+    return ros_run.declared_args(os.path.join(found, "launch", launch_file) if found else "")
+
+
 def _launch_args(env: Dict[str, str], package: str, launch_file: str,
                  headless: Optional[Dict[str, str]] = None) -> List[str]:
     """The course's headless arguments (gui:=false) that the launch file declares
     (headless either way: no DISPLAY)."""
-    found = submission.sourced_find(env, package)
-    path = os.path.join(found, "launch", launch_file) if found else ""
-    declared = ros_run.declared_args(path)
+    declared = _declared(env, package, launch_file)
     headless = {"gui": "false"} if headless is None else headless
     return [f"{name}:={value}" for name, value in headless.items() if name in declared]
+
+
+@dataclass
+class CommandPlan:
+    """A guide's command as it runs for this submission: the arguments its launch file
+    declares, and for each it does not, the node that starts that part by hand (or none);
+    what was done, in words for the report."""
+
+    args: List[str]
+    by_hand: List[Tuple[str, str]]     # (package, node)
+    notes: List[str]
+
+
+def plan_command(course: Course, key: str, env: Dict[str, str],
+                 readmes: List[str]) -> CommandPlan:
+    """Never an argument the submission's launch file does not declare: the guide's
+    ``flip:=true`` goes to a launch file with a ``flip`` argument; otherwise the part it
+    starts is started by hand (course ``by_hand``), as the submission's README says."""
+    package, launch_file = course.commands[key]
+    declared = _declared(env, package, launch_file)
+    plan = CommandPlan([], [], [])
+    for arg in course.command_args.get(key, []):
+        name = arg.split(":=")[0]
+        if name in declared:
+            plan.args.append(arg)
+            continue
+        hand = course.by_hand.get(name)
+        found = submission.sourced_find(env, hand[0]) if hand else None
+        node = instructions.node_started_by_hand(
+            readmes, hand[0], hand[1], layout_checks.runnable_nodes(found) if found else []) \
+            if hand else None
+        if node:
+            plan.by_hand.append((hand[0], node))
+            plan.notes.append(f"{launch_file} declares no '{name}' argument, so '{arg}' was "
+                              f"not passed; the grader ran 'rosrun {hand[0]} {node}' after it, "
+                              "as the submission's README (or its node's name) says")
+        else:
+            plan.notes.append(f"{launch_file} declares no '{name}' argument, so '{arg}' was "
+                              "not passed" + (f", and no node of {hand[0]} named for "
+                                              f"'{hand[1]}' was found to run by hand"
+                                              if hand else ""))
+    return plan
 
 
 def call_named(target: str, *args):
@@ -42,7 +89,8 @@ def call_named(target: str, *args):
 
 
 def scenario_results(course: Course, scenario: str, env: Dict[str, str],
-                     log_dir: str, out: str = "") -> List[ItemResult]:
+                     log_dir: str, out: str = "", readmes: Tuple[str, ...] = ()
+                     ) -> List[ItemResult]:
     """Runs ``scenario`` in a fresh simulation; one result per item it judges, with the
     pictures the probe wrote and the plots of its samples (in ``out``, the report's
     folder, when given)."""
@@ -51,6 +99,7 @@ def scenario_results(course: Course, scenario: str, env: Dict[str, str],
     started = time.monotonic()
     limit = course.limits["scenario"]
     names = []
+    said: List[str] = []      # how the commands were run, when not as the guide types them
     session = ros_run.Session(env, log_dir, course.limits)
     try:
         with session:
@@ -64,8 +113,12 @@ def scenario_results(course: Course, scenario: str, env: Dict[str, str],
                 # are what the scenario grades and pictures
                 headless = [] if spec.display else \
                     _launch_args(env, package, launch_file, course.headless_args)
-                session.launch(key, package, launch_file,
-                               headless + course.command_args.get(key, []))
+                plan = plan_command(course, key, env, list(readmes))
+                said += plan.notes
+                session.launch(key, package, launch_file, headless + plan.args)
+                for hand_package, node in plan.by_hand:
+                    names.append(f"{key}_{node}")
+                    session.rosrun(names[-1], hand_package, node)
                 if key in spec.ready and key != spec.commands[-1]:
                     session.wait_for_topic(spec.ready[key], course.limits["startup"])
             remaining = limit - (time.monotonic() - started)
@@ -76,15 +129,16 @@ def scenario_results(course: Course, scenario: str, env: Dict[str, str],
         trouble = _trouble_after(log_dir, names)
         seconds = time.monotonic() - started
         return _with_killed(session, _not_pictured(spec, [
-            failed_item(item, str(error), trouble, seconds) for item in items], str(error)))
+            failed_item(item, str(error), trouble, seconds, said) for item in items],
+            str(error)))
     seconds = time.monotonic() - started
     if "error" in answer:
         return _with_killed(session, _not_pictured(spec, [
-            failed_item(item, answer["error"], trouble, seconds) for item in items],
+            failed_item(item, answer["error"], trouble, seconds, said) for item in items],
             answer["error"]))
     checks, notes = answer.get("checks", {}), answer.get("notes", {})
     results = [judge(item, [Check.from_dict(c) for c in checks.get(item.id, [])],
-                     notes.get(item.id, []), trouble, seconds) for item in items]
+                     said + notes.get(item.id, []), trouble, seconds) for item in items]
     if out:
         add_figures(results, answer, out)
     return _with_killed(session, results)
@@ -256,6 +310,8 @@ def _grade_in(course, path, out, platform_setup, progress, scenarios, workspace,
     foreign = submission.resolves_inside(env, list(staged.found), workspace)
     if foreign:
         report.notes += foreign
+    # what the submission's READMEs tell its user to type (a node started by hand)
+    readmes = tuple(instructions.readme_texts([staged.root, *staged.found.values()]))
 
     def run(scenario: str) -> List[ItemResult]:
         items = course.items_of(scenario)
@@ -272,7 +328,7 @@ def _grade_in(course, path, out, platform_setup, progress, scenarios, workspace,
             results = runner_results(course, scenario,
                                      RunnerContext(env, workspace, staged, log_dir))
         else:
-            results = scenario_results(course, scenario, env, log_dir, out)
+            results = scenario_results(course, scenario, env, log_dir, out, readmes)
         progress(f"scenario {scenario}: {sum(r.awarded for r in results):g} of "
                  f"{sum(r.item.points for r in results):g} in {results[0].seconds:.0f} s")
         return results

@@ -320,16 +320,39 @@ def measure(scenario: str, course, folder: str = "") -> Dict:
     return getattr(importlib.import_module(module_name), function)(course, scenario)
 
 
+def unpause_if_paused(timeout: float) -> str:
+    """A world its launch file started paused is unpaused (/gazebo/unpause_physics), as
+    the assignment tells students to ("press play"); what was done, for the report, or ""
+    when the world was running."""
+    from gazebo_msgs.srv import GetPhysicsProperties
+    from std_srvs.srv import Empty
+    rospy.wait_for_service("/gazebo/get_physics_properties", timeout=timeout)
+    properties = rospy.ServiceProxy("/gazebo/get_physics_properties", GetPhysicsProperties)
+    if not properties().pause:
+        return ""
+    rospy.wait_for_service("/gazebo/unpause_physics", timeout=timeout)
+    rospy.ServiceProxy("/gazebo/unpause_physics", Empty)()
+    return (f"the world started paused (at {rospy.get_time():.3f} s of simulated time); "
+            "the grader unpaused it with /gazebo/unpause_physics, as the assignment tells "
+            "students to ('press play')")
+
+
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     scenario, config_path = argv[0], argv[1]
     folder = argv[2] if len(argv) > 2 else ""
     course = course_file.parse(config_path)
-    if not scenario_spec(course, scenario).display:  # a simulation: on its clock
+    spec = scenario_spec(course, scenario)
+    if not spec.display:  # a simulation: on its clock
         wait_for_simulated_time(course.limits["startup"])
     rospy.init_node("course_grader_probe", anonymous=True, disable_signals=True)
     try:
+        said = unpause_if_paused(course.limits["startup"]) \
+            if spec.unpause and not spec.display else ""
         answer = measure(scenario, course, folder)
+        if said:
+            for item in course.items_of(scenario):
+                answer.setdefault("notes", {}).setdefault(item.id, []).insert(0, said)
     except Exception as error:  # pylint: disable=broad-except
         traceback.print_exc()
         answer = {"error": f"{type(error).__name__}: {error}"}

@@ -115,9 +115,10 @@ def judge(item: Item, checks: Iterable[Check], notes: Iterable[str] = (),
 
 
 def failed_item(item: Item, reason: str, log: Iterable[str] = (),
-                seconds: float = 0.0) -> ItemResult:
+                seconds: float = 0.0, notes: Iterable[str] = ()) -> ItemResult:
     """An item that could not be measured (no build, no launch): 0 points, the reason."""
-    return ItemResult(item, 0.0, [Check("ran", False, reason)], [], list(log), seconds)
+    return ItemResult(item, 0.0, [Check("ran", False, reason)], list(notes), list(log),
+                      seconds)
 
 
 @dataclass

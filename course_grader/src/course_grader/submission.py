@@ -36,6 +36,7 @@ class Staged:
     found: Dict[str, str] = field(default_factory=dict)   # package -> where it was found
     missing: List[str] = field(default_factory=list)
     revision: Optional[str] = None                         # git commit graded, if a repository
+    root: str = ""                                         # the submission's folder (or checkout)
 
 
 @dataclass
@@ -85,7 +86,7 @@ def stage(path: str, packages: List[str], workspace: str) -> Staged:
             raise SubmissionError(f"git clone of '{path}' failed: {clone.stderr.strip()}")
         revision = subprocess.run(["git", "-C", source, "rev-parse", "HEAD"], capture_output=True,
                                   text=True, check=False).stdout.strip() or None
-    staged = Staged(workspace=workspace, revision=revision)
+    staged = Staged(workspace=workspace, revision=revision, root=source)
     staged.found = find_packages(source, packages)
     staged.missing = [p for p in packages if p not in staged.found]
     os.makedirs(os.path.join(workspace, "src"), exist_ok=True)

@@ -1,0 +1,58 @@
+"""What a submission's own README tells its user to type, so that the grader runs the
+submission as its author says and as the assignment tells students: the ``rosrun`` and
+``roslaunch`` lines of its READMEs (in code blocks or inline), and, where the guide's
+command passes an argument the submission's launch file does not declare (``flip:=true``),
+the node that starts that part by hand instead. No ROS here."""
+from __future__ import annotations
+
+import os
+import re
+import shlex
+from typing import Iterable, List, Optional
+
+README_NAMES = re.compile(r"^readme(\.(md|markdown|rst|txt))?$", re.IGNORECASE)
+# a command as a README shows it: at a line's start (after a prompt) or in backticks
+COMMAND = re.compile(r"(?:^|`|\$\s*)\s*((?:rosrun|roslaunch)\s+[^`\n]+)", re.MULTILINE)
+
+
+def readme_texts(folders: Iterable[str]) -> List[str]:
+    """The READMEs directly in ``folders`` (a submission's root, its packages), read."""
+    texts = []
+    for folder in folders:
+        if not folder or not os.path.isdir(folder):
+            continue
+        for name in sorted(os.listdir(folder)):
+            path = os.path.join(folder, name)
+            if README_NAMES.match(name) and os.path.isfile(path):
+                with open(path, encoding="utf-8", errors="replace") as stream:
+                    texts.append(stream.read())
+    return texts
+
+
+def commands(texts: Iterable[str]) -> List[List[str]]:
+    """Every ``rosrun``/``roslaunch`` command the texts give, split as a shell splits it
+    (a trailing comment dropped)."""
+    found = []
+    for text in texts:
+        for match in COMMAND.finditer(text):
+            line = match.group(1).split(" #")[0].strip()
+            try:
+                words = shlex.split(line)
+            except ValueError:
+                continue
+            if len(words) >= 3:
+                found.append(words)
+    return found
+
+
+def node_started_by_hand(texts: Iterable[str], package: str, word: str,
+                         runnable: Iterable[str]) -> Optional[str]:
+    """The node of ``package`` that starts the part named ``word`` by hand: the one the
+    README runs (``rosrun package node`` with ``word`` in the node's name), else the one
+    of ``runnable`` (the package's nodes rosrun can run) whose name holds ``word``."""
+    runnable = list(runnable)
+    for words in commands(texts):
+        if words[0] == "rosrun" and words[1] == package and word in words[2]:
+            return words[2]
+    named = [node for node in runnable if word in node]
+    return named[0] if named else None

@@ -1,0 +1,58 @@
+"""What a submission's README tells its user to type, and the guide's command planned for a
+submission whose launch file does not declare the guide's argument: the argument is not
+passed, the node the README runs is started by hand instead, and the report says so."""
+import os
+
+from course_grader import course as course_file
+from course_grader import grader, instructions
+
+README = """# diff_drive
+
+Start the world (it starts paused: hit play in Gazebo):
+
+```
+roslaunch diff_drive ddrive.launch
+rosrun diff_drive flipper   # flips the robot
+```
+
+Or `rosrun diff_drive flipper _speed:=3` with a faster speed.
+"""
+
+
+def test_the_commands_a_readme_gives():
+    assert instructions.commands([README]) == [
+        ["roslaunch", "diff_drive", "ddrive.launch"], ["rosrun", "diff_drive", "flipper"],
+        ["rosrun", "diff_drive", "flipper", "_speed:=3"]]
+
+
+def test_the_node_started_by_hand_is_the_readmes_else_the_one_named_so():
+    assert instructions.node_started_by_hand([README], "diff_drive", "flip", []) == "flipper"
+    assert instructions.node_started_by_hand([], "diff_drive", "flip",
+                                             ["drive", "flip_node"]) == "flip_node"
+    assert instructions.node_started_by_hand([], "diff_drive", "flip", ["drive"]) is None
+
+
+def test_readmes_are_read_from_the_folders_given(tmp_path):
+    (tmp_path / "README.md").write_text(README)
+    (tmp_path / "notes.md").write_text("rosrun diff_drive other")
+    assert instructions.readme_texts([str(tmp_path), "", str(tmp_path / "none")]) == [README]
+
+
+def test_an_argument_the_launch_file_does_not_declare_is_not_passed(tmp_path, monkeypatch):
+    hw3 = course_file.load("me495_hw3")
+    package = tmp_path / "diff_drive"
+    (package / "launch").mkdir(parents=True)
+    (package / "nodes").mkdir()
+    (package / "nodes" / "flipper").write_text("#!/usr/bin/env python3\n")
+    os.chmod(package / "nodes" / "flipper", 0o755)
+    (package / "launch" / "ddrive.launch").write_text(
+        '<launch><arg name="paused" default="true"/><arg name="gui" default="true"/></launch>')
+    monkeypatch.setattr(grader.submission, "sourced_find", lambda env, name: str(package))
+    plan = grader.plan_command(hw3, "ddrive_flip", {}, [README])
+    assert plan.args == [] and plan.by_hand == [("diff_drive", "flipper")]
+    assert "declares no 'flip' argument" in plan.notes[0]
+    assert "rosrun diff_drive flipper" in plan.notes[0]
+    (package / "launch" / "ddrive.launch").write_text(
+        '<launch><arg name="flip" default="false"/></launch>')
+    plan = grader.plan_command(hw3, "ddrive_flip", {}, [README])
+    assert plan.args == ["flip:=true"] and plan.by_hand == [] and plan.notes == []
