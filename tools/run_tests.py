@@ -6,7 +6,7 @@ Tiers, in order (design.md, "Tests"):
   3. rostest    a real master each:  <package>/test/rostest/*.test and <package>/test/*.test
                 (two files at a time, each on its own free port, but for a few timing-bound
                 ones that run alone: ROSTEST_ALONE; --rostest-jobs 1: all one by one)
-  4. e2e        as a user types it:  test/e2e/
+  4. e2e        as a user types it:  test/e2e/ (two lanes side by side: E2E_LANES)
   5. fuzz       pytest + Hypothesis: <package>/test/fuzz/ (generated and mutated descriptions;
                 bounded for make test, FUZZ_LONG=1 for a long run: make fuzz-long)
 
@@ -29,7 +29,7 @@ import time
 import xml.etree.ElementTree as ET
 from concurrent.futures import ThreadPoolExecutor, as_completed
 from dataclasses import dataclass, field
-from typing import List, Tuple
+from typing import Callable, List, Tuple
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RESULTS = os.path.join(REPO, "test_results")
@@ -49,6 +49,18 @@ ROSTEST_JOBS = 2
 # an overshoot, fixed in d60315c; it stays alone until it is measured stable beside
 # others); flip_headings.test (2x, four flip nodes) says so itself.
 ROSTEST_ALONE = ("my_rb1_ros/rotate.test", "diff_drive/flip_headings.test")
+
+
+# The e2e tier in two lanes side by side (each test starts its own master on a free port
+# and its own screen): the grader's tests, which grade batches of submissions two or three
+# at a time, one after the other in the first; every other test in the second. Most e2e
+# time is waiting on simulations paced at real time, so two lanes share the 2 cores.
+E2E_LANES = (lambda path: "course_grader" in os.path.basename(path), lambda path: True)
+# The unit and description tiers are CPU-bound; two lanes, about even: the simulator's unit
+# tests beside the others'; ROS's lint and check tools over the workspace (two thirds of the
+# description tier) beside the description tests
+UNIT_LANES = (lambda path: f"{os.sep}sim_bridge{os.sep}" in path, lambda path: True)
+DESCRIPTION_LANES = (lambda path: path.endswith("test_workspace_lint.py"), lambda path: True)
 
 
 @dataclass
@@ -97,23 +109,55 @@ def count_junit(path: str) -> Tally:
     return tally
 
 
-def run_pytest(tier: str, paths: List[str], keyword: str) -> Tally:
-    paths = [p for p in paths if os.path.isdir(p)]
-    if not paths:
-        return Tally()
-    junit = os.path.join(RESULTS, f"pytest-{tier}.xml")
+def _pytest_lane(name: str, paths: List[str], keyword: str, quiet: bool) -> Tuple[Tally, str]:
+    """One pytest process over ``paths``; its tally and, when ``quiet``, its output (to be
+    printed whole once it ends, not interleaved with another lane's)."""
+    junit = os.path.join(RESULTS, f"pytest-{name}.xml")
+    if os.path.exists(junit):
+        os.remove(junit)
     command = [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider",
                f"--junitxml={junit}", *paths]
     if keyword:
         command += ["-k", keyword]
-    code = subprocess.run(command, cwd=REPO, check=False).returncode
+    done = subprocess.run(command, cwd=REPO, check=False, text=True,
+                          stdout=subprocess.PIPE if quiet else None,
+                          stderr=subprocess.STDOUT if quiet else None)
+    code, output = done.returncode, done.stdout or ""
     if code == 5:  # pytest: no tests were collected (e.g. filtered out by -k)
-        return Tally()
+        return Tally(), ""
     if not os.path.exists(junit):
-        return Tally(failed=1, failures=[f"{tier}: pytest exited {code} without results"])
+        return Tally(failed=1, failures=[f"{name}: pytest exited {code} without results"]), output
     tally = count_junit(junit)
     if code != 0 and tally.failed == 0:
-        tally.failed, tally.failures = 1, [f"{tier}: pytest exited {code}"]
+        tally.failed, tally.failures = 1, [f"{name}: pytest exited {code}"]
+    return tally, output
+
+
+def run_pytest(tier: str, paths: List[str], keyword: str,
+               lanes: Tuple[Callable[[str], bool], ...] = ()) -> Tally:
+    """pytest over ``paths``; with ``lanes`` (predicates on a test file's path), the test
+    files are split into one pytest process per lane (a file goes to the first lane that
+    takes it, the last lane takes the rest), run side by side on the 2 cores, each lane's
+    output printed when it ends."""
+    paths = [p for p in paths if os.path.isdir(p)]
+    if not paths:
+        return Tally()
+    if not lanes:
+        return _pytest_lane(tier, paths, keyword, quiet=False)[0]
+    files = sorted(f for p in paths for f in glob.glob(os.path.join(p, "**", "test_*.py"),
+                                                       recursive=True))
+    groups: List[List[str]] = [[] for _ in lanes]
+    for test_file in files:
+        index = next((i for i, takes in enumerate(lanes) if takes(test_file)), len(lanes) - 1)
+        groups[index].append(test_file)
+    tally = Tally()
+    with ThreadPoolExecutor(max_workers=len(lanes)) as pool:
+        running = [pool.submit(_pytest_lane, f"{tier}-{index + 1}", group, keyword, True)
+                   for index, group in enumerate(groups) if group]
+        for done in as_completed(running):
+            lane_tally, output = done.result()
+            print(output, end="", flush=True)
+            tally.add(lane_tally)
     return tally
 
 
@@ -205,17 +249,20 @@ def main() -> int:
         tier_started = time.monotonic()
         if tier == "unit":
             tally = run_pytest(tier, [os.path.join(p, "test", "unit") for p in packages()]
-                               + [os.path.join(REPO, "test", "unit")], args.keyword)
+                               + [os.path.join(REPO, "test", "unit")], args.keyword,
+                               UNIT_LANES)
         elif tier == "description":
             tally = run_pytest(tier, [os.path.join(p, "test", "description") for p in packages()]
-                               + [os.path.join(REPO, "test", "description")], args.keyword)
+                               + [os.path.join(REPO, "test", "description")], args.keyword,
+                               DESCRIPTION_LANES)
         elif tier == "rostest":
             tally = run_rostests(args.keyword, args.rostest_jobs)
         elif tier == "fuzz":
             tally = run_pytest(tier, [os.path.join(p, "test", "fuzz") for p in packages()],
                                args.keyword)
         else:
-            tally = run_pytest(tier, [os.path.join(REPO, "test", "e2e")], args.keyword)
+            tally = run_pytest(tier, [os.path.join(REPO, "test", "e2e")], args.keyword,
+                               E2E_LANES)
         print(f"=== {tier}: {tally.passed} passed, {tally.failed} failed, {tally.skipped} "
               f"skipped in {time.monotonic() - tier_started:.0f} s ===", flush=True)
         total.add(tally)

@@ -1,7 +1,10 @@
-"""Faulty RB1 submissions for course_grader's tests, made at test time from the workspace's
-own solution: each is a copy of ``my_rb1_description``, ``my_rb1_gazebo`` and ``my_rb1_ros``
-with one fault of the kinds students make, and the table says which of the guide's items
-(``course_grader/config/rb1.yaml``) that fault must cost.
+"""RB1 submissions for course_grader's tests, made at test time from the workspace's own
+solution: each is a copy of ``my_rb1_description``, ``my_rb1_gazebo`` and ``my_rb1_ros``
+with one fault of the kinds students make (``FAULTS``), or written otherwise than ours but
+correct by the guide (``CORRECT_BY_THE_GUIDE``: other joint names, link order, a xacro, 26
+kg, tilting casters, a paused world, a turn 6 degrees long, a node without the executable
+bit), and the tables say what each must score by the guide's items
+(``course_grader/config/rb1.yaml``).
 
 Interface (used by ``test_course_grader_faults.py`` and the batch test):
 
@@ -28,8 +31,10 @@ from __future__ import annotations
 
 import os
 import shutil
-from dataclasses import dataclass
-from typing import Dict, Optional, Tuple
+from typing import Dict, Optional
+
+from fixture_edits import (Chmod, Copy, Delete, Fault, FixtureError, Insert, MoveBlock, Rename,
+                           Replace, ReplaceAll, apply, nothing_for)
 
 RB1_PACKAGES = ("my_rb1_description", "my_rb1_gazebo", "my_rb1_ros")
 FILES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "rb1_fault_fixtures")
@@ -41,71 +46,13 @@ HANG_LIMIT = 15.0   # s: the scenario limit the hanging fixture is graded with
 STOP_LIMIT_SLACK = 15.0   # s past limit + stop within which a killed scenario must have ended
 
 URDF = "my_rb1_description/urdf/my_rb1_robot.urdf"
+DISPLAY = "my_rb1_description/launch/display.launch"
 LAUNCH = "my_rb1_gazebo/launch/my_rb1_robot_warehouse.launch"
 NODE = "my_rb1_ros/src/my_rb1_ros/rotate_service.py"
 ROS_CMAKE = "my_rb1_ros/CMakeLists.txt"
 ROS_PACKAGE = "my_rb1_ros/package.xml"
 TARGET_LINE = "        target = start + math.radians(degrees)\n"
 MAIN_LINE = "def main() -> None:\n"
-
-
-class FixtureError(RuntimeError):
-    """An edit that no longer applies to the solution; the message names it."""
-
-
-@dataclass(frozen=True)
-class Replace:
-    """In ``path`` (relative to the submission), the one occurrence of ``old`` becomes
-    ``new``; ``new_file``: ``new`` is read from that file in FILES instead."""
-
-    path: str
-    old: str
-    new: str = ""
-    new_file: str = ""
-
-
-@dataclass(frozen=True)
-class Insert:
-    """A file of FILES inserted into ``path`` just before the one occurrence of ``before``."""
-
-    path: str
-    before: str
-    source: str
-
-
-@dataclass(frozen=True)
-class Copy:
-    """A file of FILES written into the submission at ``path``."""
-
-    source: str
-    path: str
-
-
-@dataclass(frozen=True)
-class Delete:
-    path: str
-
-
-@dataclass(frozen=True)
-class Fault:
-    what: str
-    edits: Tuple
-    scores: Dict[str, float]   # item id -> points it must get; items not named: full marks
-    scenarios: Tuple[str, ...]
-    scenario_limit: Optional[float] = None
-
-    def expected(self, items) -> Dict[str, float]:
-        """Points per item of ``items`` (course Items) this fault must get."""
-        return {item.id: self.scores.get(item.id, item.points) for item in items}
-
-
-def _none(items) -> Dict[str, float]:
-    return {item: 0.0 for item in items}
-
-
-def _read(name: str) -> str:
-    with open(os.path.join(FILES, name), encoding="utf-8") as stream:
-        return stream.read()
 
 
 FAULTS: Dict[str, Fault] = {
@@ -142,7 +89,7 @@ FAULTS: Dict[str, Fault] = {
         "answers success at once and does not turn",
         (Replace(NODE, "            return self._turn_by(degrees, start, watch)\n",
                  '            return f"success: rotated {degrees} degrees"\n'),),
-        _none({"rotate_degrees", "rotate_answers_success"}), ("rotate",)),
+        nothing_for({"rotate_degrees", "rotate_answers_success"}), ("rotate",)),
     "turn_wraps_at_180": Fault(
         "the goal wrapped into (-180, 180]: 270 turns -90 and 360 does nothing",
         (Replace(NODE, TARGET_LINE,
@@ -153,7 +100,7 @@ FAULTS: Dict[str, Fault] = {
     "degrees_as_radians": Fault(
         "the request's degrees used as radians (90 asks for 90 rad)",
         (Replace(NODE, TARGET_LINE, "        target = start + degrees\n"),),
-        _none({"rotate_degrees", "rotate_answers_success"}), ("rotate",)),
+        nothing_for({"rotate_degrees", "rotate_answers_success"}), ("rotate",)),
     "no_success_message": Fault(
         "the answer says what was done but not 'success'",
         (Replace(NODE, '                    return (f"success: rotated {degrees} degrees',
@@ -178,7 +125,7 @@ FAULTS: Dict[str, Fault] = {
     "does_not_build": Fault(
         "Rotate.srv's field type misspelt (in32): message generation fails, nothing builds",
         (Replace("my_rb1_ros/srv/Rotate.srv", "int32 degrees", "in32 degrees"),),
-        _none(ALL_ITEMS), ALL_SCENARIOS),
+        nothing_for(ALL_ITEMS), ALL_SCENARIOS),
     "node_hangs": Fault(
         "the service never answers (waits for an event nothing sets) and the node ignores "
         "SIGINT and SIGTERM",
@@ -192,32 +139,69 @@ FAULTS: Dict[str, Fault] = {
                  '    rospy.init_node("rotate_service")\n'
                  "    signal.signal(signal.SIGINT, signal.SIG_IGN)\n"
                  "    signal.signal(signal.SIGTERM, signal.SIG_IGN)\n")),
-        _none(ROTATE_ITEMS), ("rotate", "scan"), HANG_LIMIT),
+        nothing_for(ROTATE_ITEMS), ("rotate", "scan"), HANG_LIMIT),
 }
 
 
-def _apply(folder: str, edit) -> None:
-    path = os.path.join(folder, edit.path)
-    if isinstance(edit, Copy):
-        shutil.copyfile(os.path.join(FILES, edit.source), path)
-        return
-    if not os.path.isfile(path):
-        raise FixtureError(f"{edit.path} is not in the solution")
-    if isinstance(edit, Delete):
-        os.remove(path)
-        return
-    if isinstance(edit, Insert):
-        old, new = edit.before, _read(edit.source) + edit.before
-    else:
-        old, new = edit.old, _read(edit.new_file) if edit.new_file else edit.new
-    with open(path, encoding="utf-8") as stream:
-        text = stream.read()
-    count = text.count(old)
-    if count != 1:
-        raise FixtureError(f"{edit.path}: the text the fixture changes occurs {count} times, "
-                           f"not once: {old!r}")
-    with open(path, "w", encoding="utf-8") as stream:
-        stream.write(text.replace(old, new))
+# Submissions correct by the guide but unlike our solution, in the style students write
+# them: each must get what a teaching assistant reading the guide's sentences gives (the
+# table's points), the grader's notes naming what differs. Same form as FAULTS.
+ROTATE_BIAS = 1.069   # the overshooting service turns this times the request: -96.2 for -90
+CORRECT_BY_THE_GUIDE: Dict[str, Fault] = {
+    "joint_names_differ": Fault(
+        "joints named base_link_to_<link> (the guide names links, never joints)",
+        tuple(ReplaceAll(URDF, f'"{link}_joint"', f'"base_link_to_{link}"')
+              for link in ("right_wheel", "left_wheel", "front_caster", "back_caster",
+                           "front_laser")),
+        {}, ("display",)),
+    "links_in_other_order": Fault(
+        "the body's link written last, after the wheels, casters and laser",
+        (MoveBlock(URDF, "  <!-- Body: cylinder", "</link>\n", "</robot>"),),
+        {}, ("display",)),
+    "xacro_description": Fault(
+        "the description as a xacro (my_rb1_robot.urdf.xacro, the wheel radius a property) "
+        "that display.launch and the warehouse launch expand",
+        (Rename(URDF, URDF + ".xacro"),
+         Replace(URDF + ".xacro", '<robot name="my_rb1_robot">',
+                 '<robot name="my_rb1_robot" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+                 '  <xacro:property name="small_radius" value="0.025"/>'),
+         ReplaceAll(URDF + ".xacro", 'radius="0.025"', 'radius="${small_radius}"'),
+         Replace(DISPLAY, "urdf/my_rb1_robot.urdf\"", "urdf/my_rb1_robot.urdf.xacro\""),
+         Replace(LAUNCH, "urdf/my_rb1_robot.urdf'", "urdf/my_rb1_robot.urdf.xacro'")),
+        {}, ("display",)),
+    "weighs_26kg": Fault(
+        "the body 22 kg: 26 kg in all (the display item's sentence asks for links and TFs)",
+        (Replace(URDF, '<mass value="21.0"/>', '<mass value="22.0"/>'),),
+        {}, ("display",)),
+    "casters_tilt_it": Fault(
+        "both casters 1 cm short of the floor: the body rocks onto one of them and rests "
+        "tilted about 5.7 deg on its wheels and that caster",
+        (Replace(URDF, '<origin xyz="0.1 0.0 -0.15" rpy="0 0 0"/>',
+                 '<origin xyz="0.1 0.0 -0.14" rpy="0 0 0"/>'),
+         Replace(URDF, '<origin xyz="-0.1 0.0 -0.15" rpy="0 0 0"/>',
+                 '<origin xyz="-0.1 0.0 -0.14" rpy="0 0 0"/>')),
+        {}, ("spawn", "drive")),
+    "starts_paused": Fault(
+        "the warehouse launch starts paused (its README: hit play in Gazebo)",
+        (Replace(LAUNCH, '<arg name="paused" default="false"', '<arg name="paused" default="true"'),
+         Copy("paused_readme.md", "my_rb1_gazebo/README.md")),
+        {}, ("spawn", "drive")),
+    "rotate_overshoots": Fault(
+        f"the service turns {ROTATE_BIAS} times the request (-96.2 for -90): partial marks "
+        "on the turn's scale, success answered when done",
+        (Replace(NODE, TARGET_LINE,
+                 f"        target = start + math.radians(degrees) * {ROTATE_BIAS}\n"),),
+        # -90, 270, 360 off by 6.2, 18.6, 24.8 deg: shares 0.952, 0.456, 0.208 of 2 points
+        {"rotate_degrees": 1.077}, ("rotate",)),
+    "node_not_executable": Fault(
+        "the rotate node without the executable bit (catkin_install_python runs it)",
+        (Chmod("my_rb1_ros/nodes/rotate_service", 0o644),),
+        {}, ("rotate",)),
+}
+# points a scaled item may differ from its stated figure by (a turn measured 0.3 deg apart
+# moves its share by 0.012 of 2 points)
+SCALED_SLACK = 0.05
+ALL_FIXTURES: Dict[str, Fault] = {**FAULTS, **CORRECT_BY_THE_GUIDE}
 
 
 def copy_solution(repo: str, folder: str) -> str:
@@ -231,11 +215,11 @@ def copy_solution(repo: str, folder: str) -> str:
 
 def make_fixture(repo: str, name: str, folder: str) -> str:
     """Fixture ``name`` (a key of FAULTS) written into ``folder``; returns ``folder``."""
-    if name not in FAULTS:
-        raise FixtureError(f"no fixture '{name}': known are {', '.join(FAULTS)}")
+    if name not in ALL_FIXTURES:
+        raise FixtureError(f"no fixture '{name}': known are {', '.join(ALL_FIXTURES)}")
     copy_solution(repo, folder)
-    for edit in FAULTS[name].edits:
-        _apply(folder, edit)
+    for edit in ALL_FIXTURES[name].edits:
+        apply(folder, edit, FILES)
     return folder
 
 
@@ -298,7 +282,42 @@ def _hangs(items, limit):
     assert limit <= rotate["seconds"] <= limit + stop + STOP_LIMIT_SLACK, rotate["seconds"]
 
 
-EVIDENCE = {"laser_not_upside_down": _laser, "spawned_outside_square": _spawn,
+def _said(item, text):
+    """``text`` is among the item's notes (the grader's, or checks beyond the sentence)."""
+    notes = item.get("beyond_the_guide", []) + item.get("notes", [])
+    assert any(text in note for note in notes), notes
+
+
+def _joint_names(items, limit):
+    _said(items["display_links_tf"], "joints not named as the guide")
+
+
+def _heavier(items, limit):
+    _said(items["display_links_tf"], "26 kg in all (guide 25)")
+
+
+def _tilted(items, limit):
+    item = items["spawn_in_start_square"]
+    _said(item, "FAIL (not scored: beyond the guide's sentence): tilted ")
+    (note,) = [n for n in item["beyond_the_guide"] if "tilted" in n]
+    assert 5.0 < float(note.split("tilted ")[1].split()[0]) < 8.0, note
+
+
+def _paused(items, limit):
+    for item_id in ("spawn_in_start_square", "cmd_vel_moves"):
+        _said(items[item_id], "the world started paused")
+
+
+def _overshoot(items, limit):
+    item = items["rotate_degrees"]
+    assert "asked -90 deg, turned -96" in item["evidence"], item["evidence"]
+    assert items["rotate_answers_success"]["awarded"] == 1.0
+
+
+EVIDENCE = {"joint_names_differ": _joint_names, "weighs_26kg": _heavier,
+            "casters_tilt_it": _tilted, "starts_paused": _paused,
+            "rotate_overshoots": _overshoot,
+            "laser_not_upside_down": _laser, "spawned_outside_square": _spawn,
             "wheels_misplaced": _wheels, "mass_not_25kg": _mass, "rotate_by_time": _by_time,
             "answers_before_turning": _early, "turn_wraps_at_180": _wraps,
             "degrees_as_radians": _radians, "no_success_message": _no_success,

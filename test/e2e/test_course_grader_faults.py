@@ -21,8 +21,8 @@ import time
 import pytest
 from course_grader import course as course_file
 
-from rb1_fault_fixtures import (FAULTS, check_evidence, make_fixture, processes_mentioning,
-                                processes_reading)
+from rb1_fault_fixtures import (ALL_FIXTURES, SCALED_SLACK, check_evidence, make_fixture,
+                                processes_mentioning, processes_reading)
 
 JOBS = 2
 # The rotate batch: the hanging fixture waits out the scenario limit doing nothing after its
@@ -39,13 +39,16 @@ ROTATE_LIMIT = 60.0
 # (scenarios graded, scenario limit or None for the course's, fixtures): every fixture once
 BATCHES = {
     "display": (("display",), None,
-                ("laser_not_upside_down", "wheels_misplaced", "mass_not_25kg")),
-    "spawn": (("spawn",), None, ("spawned_outside_square",)),
+                ("laser_not_upside_down", "wheels_misplaced", "mass_not_25kg",
+                 "joint_names_differ", "links_in_other_order", "xacro_description",
+                 "weighs_26kg")),
+    "spawn": (("spawn", "drive"), None,
+              ("spawned_outside_square", "casters_tilt_it", "starts_paused")),
     "build": ((), None, ("does_not_build",)),
     "rotate": (("rotate",), ROTATE_LIMIT,
                ("rotate_by_time", "answers_before_turning", "turn_wraps_at_180",
                 "degrees_as_radians", "no_success_message", "cpp_rotate_service",
-                "node_hangs")),
+                "rotate_overshoots", "node_not_executable", "node_hangs")),
 }
 MARKER = "COURSE_GRADER_BATCH="
 RESULTS = os.path.join("test_results", "e2e", "course_grader", "faults")
@@ -109,30 +112,36 @@ def batch_of(fixture):
 
 def test_every_fixture_is_graded_in_exactly_one_batch():
     placed = [fixture for _, _, fixtures in BATCHES.values() for fixture in fixtures]
-    assert sorted(placed) == sorted(FAULTS)
+    assert sorted(placed) == sorted(ALL_FIXTURES)
     for name, (scenarios, _, fixtures) in BATCHES.items():
         for fixture in fixtures:  # the batch grades every scenario the fault touches
-            assert not scenarios or set(FAULTS[fixture].scores) <= {
+            assert not scenarios or set(ALL_FIXTURES[fixture].scores) <= {
                 item.id for s in scenarios for item in course_file.load("rb1").items_of(s)}
 
 
-@pytest.mark.parametrize("fixture", list(FAULTS))
-def test_a_fault_gets_exactly_its_points(batches, fixture):
+@pytest.mark.parametrize("fixture", list(ALL_FIXTURES))
+def test_a_fixture_gets_exactly_its_points(batches, fixture):
+    """A faulty fixture loses what its fault costs by the rubric; one correct by the guide
+    but unlike ours gets what a teaching assistant gives (full marks, or a scaled item's
+    share within SCALED_SLACK)."""
     batch = batches[batch_of(fixture)]
     course = course_file.load("rb1")
     graded = [item for item in course.items
               if not batch.scenarios or item.scenario in batch.scenarios]
     row = batch.rows[fixture]
     awarded = {item.id: float(row[item.id]) for item in course.items if row[item.id] != ""}
-    expected = FAULTS[fixture].expected(graded)
+    expected = ALL_FIXTURES[fixture].expected(graded)
     items = batch.items(fixture)
-    evidence = "\n".join(f"  {i}: {item['awarded']:g}/{item['points']:g}  {item['evidence']}"
-                         for i, item in sorted(items.items()))
-    print(f"{fixture}: {FAULTS[fixture].what}; {float(row['seconds']):.0f} s\n{evidence}")
-    assert awarded == expected, evidence
-    assert {i: item["awarded"] for i, item in items.items()} == expected
+    evidence = "\n".join(f"  {i}: {item['awarded']:g}/{item['points']:g} {item['mark']}  "
+                         f"{item['evidence']}" for i, item in sorted(items.items()))
+    print(f"{fixture}: {ALL_FIXTURES[fixture].what}; {float(row['seconds']):.0f} s\n{evidence}")
+    slack = {item.id: SCALED_SLACK if item.rubric.scale else 0.0 for item in graded}
+    assert awarded.keys() == expected.keys(), evidence
+    for item_id, points in expected.items():
+        assert awarded[item_id] == pytest.approx(points, abs=slack[item_id] + 1e-9), evidence
+        assert items[item_id]["awarded"] == pytest.approx(awarded[item_id], abs=1e-3)
     assert row["status"] == "graded", row
-    assert float(row["total"]) == pytest.approx(sum(expected.values()))
+    assert float(row["total"]) == pytest.approx(sum(awarded.values()), abs=0.01)
     check_evidence(fixture, items, batch.limit)
 
 

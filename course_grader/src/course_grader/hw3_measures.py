@@ -1,9 +1,13 @@
 """Figures for ME495 homework 3 from ground-truth samples, no ROS: flips counted from the
-body's up axis, distance travelled in the plane, and whether a point has come to rest."""
+body's up axis, distance travelled in the plane, whether a point has come to rest, and
+which Gazebo model each name of a world file stands for."""
 from __future__ import annotations
 
+import glob
 import math
-from typing import Optional, Sequence, Tuple
+import os
+import xml.etree.ElementTree as ET
+from typing import Dict, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -42,3 +46,21 @@ def still_points(samples: Sequence[Tuple[float, np.ndarray]], window: float,
     end_time, end = samples[-1]
     recent = [p for t, p in samples if t >= end_time - window]
     return max(float(np.linalg.norm(np.asarray(p) - end)) for p in recent) <= speed * window
+
+
+def included_models(worlds_dir: str) -> Dict[str, str]:
+    """Model name -> the ``model://`` uri it was included from, for every ``<include>`` of
+    the .world files in ``worlds_dir`` (a student names an included jersey_barrier "wall_1";
+    it is a jersey barrier all the same). An include without ``<name>`` is named by its
+    model, so only named ones are listed."""
+    named: Dict[str, str] = {}
+    for path in sorted(glob.glob(os.path.join(worlds_dir, "*.world"))):
+        try:
+            root = ET.parse(path).getroot()
+        except ET.ParseError:
+            continue
+        for include in root.iter("include"):
+            uri, name = include.findtext("uri"), include.findtext("name")
+            if uri and name:
+                named[name.strip()] = uri.strip()
+    return named

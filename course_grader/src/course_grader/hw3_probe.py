@@ -15,7 +15,7 @@ import numpy as np
 import rospy
 from tf import transformations
 
-from course_grader.hw3_measures import FlipCount, planar_travel, still_points
+from course_grader.hw3_measures import FlipCount, included_models, planar_travel, still_points
 from course_grader.measures import thin
 from course_grader.probe import Truth, pose_recorder
 from course_grader.probe_tools import ProbeError, check, wait_until
@@ -43,15 +43,20 @@ def world(course, scenario: str) -> Dict:
     _, joints = _joints_of("/robot_description", limit)
     robot = truth.find_robot(joints)
     names = [n for n in truth.world().model_names if n != robot]
+    package, launch_file = spec["launch"]
+    package_dir = rospkg.RosPack().get_path(package)
+    # a model is what it was included as, whatever the student named it
+    uris = included_models(os.path.join(package_dir, "worlds"))
     contents = []
     for wanted in spec["models"]:
-        found = [n for n in names if wanted["name"].lower() in n.lower()]
+        key = wanted["name"].lower()
+        found = [n for n in names if key in n.lower() or key in uris.get(n, "").lower()]
+        shown = [n if key in n.lower() else f"{n} ({uris[n]})" for n in found]
         contents.append(check(f"at least {wanted['at_least']} {wanted['name']}",
                               len(found) >= wanted["at_least"],
-                              f"{len(found)} model(s) named *{wanted['name']}* "
-                              f"(at least {wanted['at_least']}): {', '.join(found) or 'none'}"))
-    package, launch_file = spec["launch"]
-    path = os.path.join(rospkg.RosPack().get_path(package), "launch", launch_file)
+                              f"{len(found)} model(s) *{wanted['name']}* by name or uri "
+                              f"(at least {wanted['at_least']}): {', '.join(shown) or 'none'}"))
+    path = os.path.join(package_dir, "launch", launch_file)
     declares = "paused" in declared_args(path)
     before = truth.sim_time()
     ends = time.monotonic() + spec["still_window"]

@@ -217,3 +217,14 @@ def test_the_layout_runner_through_the_graders_hook(tmp_path):
     # the layout's parts: diff_drive's folders, nodes, files, and arm_move: three of four
     assert results["layout"].awarded == 0.375 and results["xacro_yaml_gazebo"].awarded == 1.0
     assert "the submission has no arm_move" in results["layout"].evidence()
+
+
+def test_a_world_names_its_included_models_by_uri(tmp_path):
+    from course_grader.hw3_measures import included_models
+    (tmp_path / "a.world").write_text(
+        "<sdf version='1.6'><world name='w'>"
+        "<include><uri>model://jersey_barrier</uri><name>wall_1</name></include>"
+        "<include><uri>model://sun</uri></include>"
+        "<model name='crate'><static>true</static></model></world></sdf>")
+    (tmp_path / "broken.world").write_text("<sdf><world>")
+    assert included_models(str(tmp_path)) == {"wall_1": "model://jersey_barrier"}

@@ -1,0 +1,103 @@
+"""course_grader on ME495 homework 3 submissions that are correct by the assignment but
+written unlike ours (hw3_fixtures): graded as a teaching assistant grades a class, ``rosrun
+course_grader grade me495_hw3 DIR/* --jobs 2 --only <scenarios> --summary``, each must get
+full marks on what its batch grades, the report saying what the grader did to run it as
+its README says (unpaused a paused world, started the flip node by hand) and how it read
+the world (models by their uri)."""
+import csv
+import json
+import os
+import shutil
+import subprocess
+
+import pytest
+from course_grader import course as course_file
+
+from hw3_fixtures import CORRECT_BY_THE_ASSIGNMENT, make_fixture
+
+JOBS = 2
+BATCH_TIMEOUT = 900      # s: one batch command, bounded
+# name: (scenarios graded, fixtures); every fixture once
+BATCHES = {
+    "files_and_world": (("layout", "world"),
+                        ("xacro_named_otherwise", "world_models_named_otherwise",
+                         "yaml_loaded_the_old_way")),
+    "flip": (("layout", "world", "flip"),
+             ("paused_flip_by_hand", "flip_node_found_by_name", "nodes_not_executable")),
+}
+RESULTS = os.path.join("test_results", "e2e", "course_grader", "calibration_hw3")
+
+
+class Batch:
+    def __init__(self, repo, folder, name):
+        scenarios, fixtures = BATCHES[name]
+        self.scenarios = scenarios
+        submissions = [make_fixture(repo, f, os.path.join(folder, f)) for f in fixtures]
+        self.out = os.path.join(repo, RESULTS, name)
+        shutil.rmtree(self.out, ignore_errors=True)
+        csv_path = os.path.join(self.out, "scores.csv")
+        done = subprocess.run(
+            ["rosrun", "course_grader", "grade", "me495_hw3", *submissions, "--jobs", str(JOBS),
+             "--out", self.out, "--csv", csv_path, "--only", *scenarios, "--summary"],
+            capture_output=True, text=True, timeout=BATCH_TIMEOUT, check=False)
+        os.makedirs(self.out, exist_ok=True)
+        with open(os.path.join(self.out, "batch.log"), "w", encoding="utf-8") as log:
+            log.write(done.stdout + done.stderr)
+        assert done.returncode == 0, done.stdout + done.stderr
+        self.stdout = done.stdout
+        with open(csv_path, encoding="utf-8", newline="") as stream:
+            self.rows = {row["name"]: row for row in csv.DictReader(stream)}
+
+    def items(self, fixture):
+        with open(os.path.join(self.out, fixture, "report.json"), encoding="utf-8") as stream:
+            return {item["id"]: item for item in json.load(stream)["items"]}
+
+
+@pytest.fixture(scope="module")
+def batches(repo, tmp_path_factory):
+    folder = tmp_path_factory.mktemp("hw3_calibration")
+    return {name: Batch(repo, str(folder / name), name) for name in BATCHES}
+
+
+def batch_of(fixture):
+    return next(name for name, (_, fixtures) in BATCHES.items() if fixture in fixtures)
+
+
+def notes(item):
+    return item["notes"] + item["beyond_the_guide"]
+
+
+def test_every_fixture_is_graded_once():
+    placed = [f for _, fixtures in BATCHES.values() for f in fixtures]
+    assert sorted(placed) == sorted(CORRECT_BY_THE_ASSIGNMENT)
+
+
+@pytest.mark.parametrize("fixture", list(CORRECT_BY_THE_ASSIGNMENT))
+def test_a_submission_correct_by_the_assignment_gets_full_marks(batches, fixture):
+    batch = batches[batch_of(fixture)]
+    hw3 = course_file.load("me495_hw3")
+    graded = [item for item in hw3.items if item.scenario in batch.scenarios]
+    items = batch.items(fixture)
+    evidence = "\n".join(f"  {i}: {item['awarded']:g}/{item['points']:g}  {item['evidence']}"
+                         for i, item in sorted(items.items()))
+    print(f"{fixture}: {CORRECT_BY_THE_ASSIGNMENT[fixture].what}\n{evidence}")
+    assert {i: items[i]["awarded"] for i in items} == \
+        CORRECT_BY_THE_ASSIGNMENT[fixture].expected(graded), evidence
+    assert batch.rows[fixture]["status"] == "graded"
+
+
+def test_the_report_says_how_the_submission_was_run(batches):
+    flip = batches["flip"]
+    paused = flip.items("paused_flip_by_hand")["flips"]
+    assert any("the world started paused" in n for n in notes(paused)), notes(paused)
+    assert any("'rosrun diff_drive flip'" in n for n in notes(paused)), notes(paused)
+    by_name = flip.items("flip_node_found_by_name")["flips"]
+    assert any("'rosrun diff_drive flipper'" in n for n in notes(by_name)), notes(by_name)
+    world = batches["files_and_world"].items("world_models_named_otherwise")["world_contents"]
+    assert "wall_north_1 (model://jersey_barrier)" in world["evidence"], world["evidence"]
+
+
+def test_the_summary_gives_the_class_per_item(batches):
+    out = batches["flip"].stdout
+    assert "item" in out and "full  part  none  mean" in out
+    assert "flips" in out and "nobody has full marks" not in out
