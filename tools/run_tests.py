@@ -52,10 +52,13 @@ ROSTEST_ALONE = ("my_rb1_ros/rotate.test", "diff_drive/flip_headings.test")
 
 
 # The e2e tier in two lanes side by side (each test starts its own master on a free port
-# and its own screen): the grader's tests, which grade batches of submissions two or three
-# at a time, one after the other in the first; every other test in the second. Most e2e
-# time is waiting on simulations paced at real time, so two lanes share the 2 cores.
-E2E_LANES = (lambda path: "course_grader" in os.path.basename(path), lambda path: True)
+# and its own screen): the grader's batch tests (fault and calibration fixtures, graded two
+# or three at a time; a batch test checks that no batch process is left, so batches run one
+# after the other) in the first, about 400 s; every other test in the second, about as
+# long. Most e2e time is waiting on simulations paced at real time: two lanes share the 2
+# cores.
+E2E_LANES = (lambda path: any(word in os.path.basename(path) for word in ("faults", "calibration")),
+             lambda path: True)
 # The unit and description tiers are CPU-bound; two lanes, about even: the simulator's unit
 # tests beside the others'; ROS's lint and check tools over the workspace (two thirds of the
 # description tier) beside the description tests
