@@ -11,8 +11,8 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from typing import Callable, Dict, List, Optional, Tuple
 
-from course_grader import (instructions, layout_checks, plots, ros_run, screenshot, submission,
-                           urdf_checks)
+from course_grader import (instructions, layout_checks, platform_faults, plots, ros_run,
+                           screenshot, submission, urdf_checks)
 from course_grader.course import Course, CourseError, ScenarioSpec, scenario_spec
 from course_grader.results import Check, Figure, ItemResult, Report, failed_item, judge
 from urdf_tools import UrdfError
@@ -89,8 +89,17 @@ def call_named(target: str, *args):
 
 
 def scenario_results(course: Course, scenario: str, env: Dict[str, str],
-                     log_dir: str, out: str = "", readmes: Tuple[str, ...] = ()
-                     ) -> List[ItemResult]:
+                     log_dir: str, out: str = "", readmes: Tuple[str, ...] = (),
+                     packages: Tuple[str, ...] = ()) -> List[ItemResult]:
+    """``scenario_run`` with the platform's faults told from the submission's
+    (``packages``: the submission's own)."""
+    return _platform_faults(scenario_run(course, scenario, env, log_dir, out, readmes),
+                            log_dir, packages)
+
+
+def scenario_run(course: Course, scenario: str, env: Dict[str, str],
+                 log_dir: str, out: str = "", readmes: Tuple[str, ...] = ()
+                 ) -> List[ItemResult]:
     """Runs ``scenario`` in a fresh simulation; one result per item it judges, with the
     pictures the probe wrote and the plots of its samples (in ``out``, the report's
     folder, when given)."""
@@ -142,6 +151,20 @@ def scenario_results(course: Course, scenario: str, env: Dict[str, str],
     if out:
         add_figures(results, answer, out)
     return _with_killed(session, results)
+
+
+def _platform_faults(results: List[ItemResult], log_dir: str,
+                     packages: Tuple[str, ...]) -> List[ItemResult]:
+    """A scenario that lost points for a fault of the platform (its logs show it, see
+    platform_faults): those items are marked "platform", not the student's loss."""
+    if all(r.passed for r in results):
+        return results
+    fault = platform_faults.find(log_dir, packages)
+    if fault:
+        for result in results:
+            if not result.passed:
+                result.platform = fault
+    return results
 
 
 def _with_killed(session: ros_run.Session, results: List[ItemResult]) -> List[ItemResult]:
@@ -328,7 +351,8 @@ def _grade_in(course, path, out, platform_setup, progress, scenarios, workspace,
             results = runner_results(course, scenario,
                                      RunnerContext(env, workspace, staged, log_dir))
         else:
-            results = scenario_results(course, scenario, env, log_dir, out, readmes)
+            results = scenario_results(course, scenario, env, log_dir, out, readmes,
+                                       tuple(staged.found))
         progress(f"scenario {scenario}: {sum(r.awarded for r in results):g} of "
                  f"{sum(r.item.points for r in results):g} in {results[0].seconds:.0f} s")
         return results

@@ -137,7 +137,9 @@ class Report:
 
     @property
     def possible(self) -> float:
-        return sum(r.item.points for r in self.results)
+        """Points of the items graded; an item the platform kept from being graded is not
+        counted against the student."""
+        return sum(r.item.points for r in self.results if not r.platform)
 
     @property
     def incomplete(self) -> bool:

@@ -1,0 +1,74 @@
+"""Faults of the grading platform, told from the submission's: a scenario whose logs hold a
+Python traceback raised in the platform's own code (the simulator, the compat packages, the
+grader), or a launch that stops at a package the platform lacks (``Resource not found`` of a
+package the submission does not hold). Such a scenario's lost points are not the student's:
+the items are marked "platform", left out of the points possible, and the grade is
+incomplete. No ROS here."""
+from __future__ import annotations
+
+import glob
+import os
+import re
+from typing import Iterable, List, Optional
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.realpath(__file__)))))
+# the platform's code: what ships in this repository besides the course solutions
+PLATFORM_DIRS = ("sim_bridge", "compat", "courses", "urdf_tools", "course_grader", ".ws")
+FRAME = re.compile(r'^\s*File "([^"]+)", line (\d+)')
+MISSING = re.compile(r"Resource not found: ([A-Za-z0-9_]+)")
+# a log this big is read from its end only
+TAIL_BYTES = 2_000_000
+
+
+def _is_platform(path: str) -> bool:
+    path = os.path.realpath(path)
+    return any(path.startswith(os.path.join(REPO, folder) + os.sep) for folder in PLATFORM_DIRS)
+
+
+def _lines(path: str) -> List[str]:
+    try:
+        with open(path, "rb") as stream:
+            stream.seek(max(0, os.path.getsize(path) - TAIL_BYTES))
+            return stream.read().decode("utf-8", errors="replace").splitlines()
+    except OSError:
+        return []
+
+
+def traceback_in_platform(lines: List[str]) -> Optional[str]:
+    """The first traceback whose innermost frame is platform code: "file:line: the
+    exception"; None when there is none."""
+    index = 0
+    while index < len(lines):
+        if not lines[index].startswith("Traceback (most recent call last)"):
+            index += 1
+            continue
+        last_frame, index = None, index + 1
+        while index < len(lines) and (lines[index].startswith(" ") or not lines[index].strip()):
+            match = FRAME.match(lines[index])
+            if match:
+                last_frame = (match.group(1), match.group(2))
+            index += 1
+        exception = lines[index].strip() if index < len(lines) else "(no exception line)"
+        if last_frame and _is_platform(last_frame[0]):
+            where = os.path.relpath(os.path.realpath(last_frame[0]), REPO)
+            return f"{where}:{last_frame[1]}: {exception}"
+    return None
+
+
+def find(log_dir: str, submission_packages: Iterable[str]) -> Optional[str]:
+    """Why the scenario logged in ``log_dir`` failed for the platform's fault, or None."""
+    own = set(submission_packages)
+    paths = sorted(glob.glob(os.path.join(log_dir, "*.log")) +
+                   glob.glob(os.path.join(log_dir, "ros", "log", "**", "*.log"), recursive=True))
+    for path in paths:
+        lines = _lines(path)
+        found = traceback_in_platform(lines)
+        if found:
+            return f"a traceback in the grading platform ({found}; {os.path.basename(path)})"
+        for line in lines:
+            match = MISSING.search(line)
+            if match and match.group(1) not in own:
+                return (f"the grading platform has no package '{match.group(1)}' "
+                        f"({os.path.basename(path)}: {line.strip()[:160]})")
+    return None
