@@ -59,9 +59,9 @@ ROSTEST_ALONE = ("my_rb1_ros/rotate.test", "diff_drive/flip_headings.test")
 # cores.
 E2E_LANES = (lambda path: any(word in os.path.basename(path) for word in ("faults", "calibration")),
              lambda path: True)
-# The unit and description tiers are CPU-bound; two lanes, about even: the simulator's unit
-# tests beside the others'; ROS's lint and check tools over the workspace (two thirds of the
-# description tier) beside the description tests
+# The unit, description and fuzz tiers are CPU-bound; two lanes, about even: the
+# simulator's unit (and fuzz) tests beside the others'; ROS's lint and check tools over the
+# workspace (two thirds of the description tier) beside the description tests
 UNIT_LANES = (lambda path: f"{os.sep}sim_bridge{os.sep}" in path, lambda path: True)
 DESCRIPTION_LANES = (lambda path: path.endswith("test_workspace_lint.py"), lambda path: True)
 
@@ -262,7 +262,7 @@ def main() -> int:
             tally = run_rostests(args.keyword, args.rostest_jobs)
         elif tier == "fuzz":
             tally = run_pytest(tier, [os.path.join(p, "test", "fuzz") for p in packages()],
-                               args.keyword)
+                               args.keyword, UNIT_LANES)
         else:
             tally = run_pytest(tier, [os.path.join(REPO, "test", "e2e")], args.keyword,
                                E2E_LANES)

@@ -35,7 +35,7 @@ CORRECT_BY_THE_ASSIGNMENT: Dict[str, Fault] = {
         "press play, then rosrun diff_drive flip",
         (Replace(LAUNCH, '<arg name="paused" default="false"', '<arg name="paused" default="true"'),
          *NO_FLIP_ARGUMENT, Copy("readme_flip_by_hand.md", "diff_drive/README.md")),
-        {}, ("world", "flip")),
+        {}, ("layout", "flip")),
     "flip_node_found_by_name": Fault(
         "no flip argument, no command in the README: the node is nodes/flipper",
         (*NO_FLIP_ARGUMENT, Copy("readme_no_commands.md", "diff_drive/README.md"),

@@ -39,17 +39,23 @@ ROTATE_LIMIT = 60.0
 # (scenarios graded, scenario limit or None for the course's, fixtures): every fixture once
 BATCHES = {
     "display": (("display",), None,
-                ("laser_not_upside_down", "wheels_misplaced", "mass_not_25kg",
-                 "joint_names_differ", "links_in_other_order", "xacro_description",
-                 "weighs_26kg")),
+                ("laser_not_upside_down", "wheels_misplaced", "joint_names_differ",
+                 "links_in_other_order", "xacro_description", "weighs_26kg")),
     "spawn": (("spawn", "drive"), None,
               ("spawned_outside_square", "casters_tilt_it", "starts_paused")),
     "build": ((), None, ("does_not_build",)),
     "rotate": (("rotate",), ROTATE_LIMIT,
-               ("rotate_by_time", "answers_before_turning", "turn_wraps_at_180",
-                "degrees_as_radians", "no_success_message", "cpp_rotate_service",
+               ("rotate_by_time", "turn_wraps_at_180", "degrees_as_radians",
                 "rotate_overshoots", "node_not_executable", "node_hangs")),
 }
+# Graded by make soak alone (test/soak/test_course_grader_faults_one_at_a_time.py grades
+# every fixture one at a time against the same table), to keep make test within its 15
+# minutes: each scores as a fixture kept here does by the same rule (the mass a note, as
+# weighs_26kg; nothing turned and success claimed, as degrees_as_radians; a full-marks
+# service, as node_not_executable; the success item alone lost), and the C++ build is the
+# batch's longest submission (60 s)
+SOAK_ONLY = ("mass_not_25kg", "answers_before_turning", "cpp_rotate_service",
+             "no_success_message")
 MARKER = "COURSE_GRADER_BATCH="
 RESULTS = os.path.join("test_results", "e2e", "course_grader", "faults")
 
@@ -112,14 +118,14 @@ def batch_of(fixture):
 
 def test_every_fixture_is_graded_in_exactly_one_batch():
     placed = [fixture for _, _, fixtures in BATCHES.values() for fixture in fixtures]
-    assert sorted(placed) == sorted(ALL_FIXTURES)
+    assert sorted(placed + list(SOAK_ONLY)) == sorted(ALL_FIXTURES)
     for name, (scenarios, _, fixtures) in BATCHES.items():
         for fixture in fixtures:  # the batch grades every scenario the fault touches
             assert not scenarios or set(ALL_FIXTURES[fixture].scores) <= {
                 item.id for s in scenarios for item in course_file.load("rb1").items_of(s)}
 
 
-@pytest.mark.parametrize("fixture", list(ALL_FIXTURES))
+@pytest.mark.parametrize("fixture", [f for f in ALL_FIXTURES if f not in SOAK_ONLY])
 def test_a_fixture_gets_exactly_its_points(batches, fixture):
     """A faulty fixture loses what its fault costs by the rubric; one correct by the guide
     but unlike ours gets what a teaching assistant gives (full marks, or a scaled item's

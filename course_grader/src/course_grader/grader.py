@@ -137,9 +137,11 @@ def scenario_run(course: Course, scenario: str, env: Dict[str, str],
     except ros_run.RunError as error:
         trouble = _trouble_after(log_dir, names)
         seconds = time.monotonic() - started
-        return _with_killed(session, _not_pictured(spec, [
-            failed_item(item, str(error), trouble, seconds, said) for item in items],
-            str(error)))
+        results = [failed_item(item, str(error), trouble, seconds, said) for item in items]
+        if isinstance(error, ros_run.ScenarioLimit):   # not measured: a TA decides
+            for result in results:
+                result.review.append(f"the grader could not finish measuring: {error}")
+        return _with_killed(session, _not_pictured(spec, results, str(error)))
     seconds = time.monotonic() - started
     if "error" in answer:
         return _with_killed(session, _not_pictured(spec, [

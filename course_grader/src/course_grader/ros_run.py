@@ -34,6 +34,11 @@ class RunError(RuntimeError):
     """A scenario could not be run (master, launch or probe); the message says which."""
 
 
+class ScenarioLimit(RunError):
+    """The scenario's checks ran out of its time: the grader could not finish measuring (a
+    hung service, or a slow machine), so its items are for a teaching assistant to review."""
+
+
 def free_port() -> int:
     with socket.socket() as sock:
         sock.bind(("127.0.0.1", 0))
@@ -212,8 +217,8 @@ class Session:
                 done = subprocess.run(command, env=self.env, stdout=subprocess.PIPE, stderr=log,
                                       timeout=timeout, check=False, text=True)
             except subprocess.TimeoutExpired as error:
-                raise RunError(f"the checks did not finish within {timeout:.0f} s "
-                               f"(see {log_path})") from error
+                raise ScenarioLimit(f"the checks did not finish within {timeout:.0f} s "
+                                    f"(see {log_path})") from error
         lines = [line for line in done.stdout.splitlines() if line.startswith("{")]
         if not lines:
             raise RunError(f"the checks ended without an answer (exit status "

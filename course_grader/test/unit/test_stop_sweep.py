@@ -118,6 +118,7 @@ def test_a_hung_scenario_reports_what_its_stop_killed(rb1, tmp_path):
     assert (tmp_path / "node_up").exists()   # the node did run
     assert all(r.awarded == 0 for r in results)   # the scenario failed, as before
     assert f"the checks did not finish within {SCENARIO:.0f} s" in results[0].evidence()
+    assert all(r.mark == "review" for r in results)    # not measured: a TA decides
     killed = results[0].killed
     assert len(killed) == 1 and "node.py" in killed[0].command
     assert _gone(killed[0].pid)
