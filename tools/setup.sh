@@ -40,6 +40,7 @@ apt_packages=(
   python3-visualization-msgs python3-trajectory-msgs python3-actionlib-msgs python3-rosgraph-msgs
   python3-tf2-msgs python3-rospkg
   libstd-msgs-dev libgeometry-msgs-dev libtrajectory-msgs-dev libactionlib-msgs-dev
+  ros-shape-msgs python3-shape-msgs libshape-msgs-dev
   librostest-dev
   python3-tf libroscpp-dev liburdf-dev libtf-dev libtf2-ros-dev libtf2-geometry-msgs-dev
   libsensor-msgs-dev libnav-msgs-dev libstd-srvs-dev libroslib-dev python3-pyqt5

@@ -6,6 +6,7 @@ group: every process the scenario starts carries the scenario's tag in its envir
 (SESSION_TAG), and whatever still carries it after the stop is killed."""
 from __future__ import annotations
 
+import fcntl
 import json
 import os
 import re
@@ -23,6 +24,8 @@ from course_grader.results import Killed
 PYTHON = "/usr/bin/python3"   # the system interpreter, where ROS lives
 POLL = 0.1                # s between looks at a condition
 LOG_LINES = 12            # lines of a launch's log kept to explain a failure
+# held while an Xvfb starts (see Session.start_display); tools/headless.py takes it too
+XVFB_START_LOCK = "/tmp/.xvfb-start.lock"
 SESSION_TAG = "COURSE_GRADER_SESSION"   # environment variable naming a scenario's processes
 COMMAND_CHARS = 200       # characters of a killed process's command line kept for the report
 # lines of a log that explain a failure
@@ -164,18 +167,24 @@ class Session:
         wait_until(answers, self.limits["startup"], f"roscore on port {self.port}")
 
     def start_display(self) -> None:
-        """A virtual screen (Xvfb) for windows the guide's launch opens (rviz, sliders)."""
+        """A virtual screen (Xvfb) for windows the guide's launch opens (rviz, sliders).
+        Xvfb picks a free display itself (``-displayfd``), but two starting at once may take
+        the same one's socket (a display rviz was using broke so, beside another run's
+        Xvfb): starts are serialised across processes by XVFB_START_LOCK, held until the
+        server announces its number."""
         read_fd, write_fd = os.pipe()
         log_path = os.path.join(self.log_dir, "xvfb.log")
-        with open(log_path, "w", encoding="utf-8") as log:
-            process = subprocess.Popen(["Xvfb", "-displayfd", str(write_fd), "-screen", "0",
-                                        "1280x1024x24", "-nolisten", "tcp"],
-                                       stdout=log, stderr=subprocess.STDOUT, pass_fds=(write_fd,),
-                                       start_new_session=True)
-        os.close(write_fd)
-        self.processes.append(("xvfb", process, log_path))
-        with os.fdopen(read_fd) as pipe:   # Xvfb writes its number once it accepts clients
-            number = pipe.readline().strip()
+        with open(XVFB_START_LOCK, "a", encoding="utf-8") as lock:
+            fcntl.flock(lock, fcntl.LOCK_EX)
+            with open(log_path, "w", encoding="utf-8") as log:
+                process = subprocess.Popen(["Xvfb", "-displayfd", str(write_fd), "-screen", "0",
+                                            "1280x1024x24", "-nolisten", "tcp"],
+                                           stdout=log, stderr=subprocess.STDOUT,
+                                           pass_fds=(write_fd,), start_new_session=True)
+            os.close(write_fd)
+            self.processes.append(("xvfb", process, log_path))
+            with os.fdopen(read_fd) as pipe:   # Xvfb writes its number once it accepts clients
+                number = pipe.readline().strip()
         if not number:
             raise RunError(f"Xvfb did not start (see {log_path})")
         self.env.update(DISPLAY=f":{number}", LIBGL_ALWAYS_SOFTWARE="1")
