@@ -116,47 +116,40 @@ def apply(folder: str, edit, files: str) -> None:
         raise FixtureError(f"{edit.path} is not in the solution")
     if isinstance(edit, Delete):
         os.remove(path)
-        return
-    if isinstance(edit, Rename):
+    elif isinstance(edit, Rename):
         os.rename(path, os.path.join(folder, edit.new_path))
-        return
-    if isinstance(edit, Chmod):
+    elif isinstance(edit, Chmod):
         os.chmod(path, edit.mode)
-        return
-    if isinstance(edit, MoveBlock):
+    else:
         with open(path, encoding="utf-8") as stream:
             text = stream.read()
+        with open(path, "w", encoding="utf-8") as stream:
+            stream.write(_edited(text, edit, files))
+
+
+def _edited(text: str, edit, files: str) -> str:
+    """``text`` after a text edit (MoveBlock, ReplaceAll, Insert or Replace)."""
+    if isinstance(edit, MoveBlock):
         if text.count(edit.start) != 1 or text.count(edit.before) != 1:
             raise FixtureError(f"{edit.path}: the block's start or its new place is not there "
                                f"once: {edit.start!r}, {edit.before!r}")
         begin = text.index(edit.start)
         end = text.index(edit.end, begin) + len(edit.end)
         block, text = text[begin:end], text[:begin] + text[end:]
-        with open(path, "w", encoding="utf-8") as stream:
-            stream.write(text.replace(edit.before, block + edit.before))
-        return
+        return text.replace(edit.before, block + edit.before)
     if isinstance(edit, ReplaceAll):
-        with open(path, encoding="utf-8") as stream:
-            text = stream.read()
         if edit.old not in text:
             raise FixtureError(f"{edit.path}: the text the fixture changes is gone: {edit.old!r}")
-        with open(path, "w", encoding="utf-8") as stream:
-            stream.write(text.replace(edit.old, edit.new))
-        return
+        return text.replace(edit.old, edit.new)
     if isinstance(edit, Insert):
         old, new = edit.before, read_file(files, edit.source) + edit.before
     else:
         old, new = edit.old, read_file(files, edit.new_file) if edit.new_file else edit.new
-    with open(path, encoding="utf-8") as stream:
-        text = stream.read()
     count = text.count(old)
     if count != 1:
         raise FixtureError(f"{edit.path}: the text the fixture changes occurs {count} times, "
                            f"not once: {old!r}")
-    with open(path, "w", encoding="utf-8") as stream:
-        stream.write(text.replace(old, new))
-
-
+    return text.replace(old, new)
 
 
 def make(folder: str, sources, edits, files: str,

@@ -30,11 +30,10 @@ CMake lines, the timed rotation) are in ``rb1_fault_fixtures/`` beside this modu
 from __future__ import annotations
 
 import os
-import shutil
 from typing import Dict, Optional
 
 from fixture_edits import (Chmod, Copy, Delete, Fault, FixtureError, Insert, MoveBlock, Rename,
-                           Replace, ReplaceAll, apply, nothing_for)
+                           Replace, ReplaceAll, make, nothing_for)
 
 RB1_PACKAGES = ("my_rb1_description", "my_rb1_gazebo", "my_rb1_ros")
 FILES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "rb1_fault_fixtures")
@@ -206,21 +205,17 @@ ALL_FIXTURES: Dict[str, Fault] = {**FAULTS, **CORRECT_BY_THE_GUIDE}
 
 def copy_solution(repo: str, folder: str) -> str:
     """Our RB1 solution's three packages (without tests and caches) in ``folder``."""
-    os.makedirs(folder)
-    for package in RB1_PACKAGES:
-        shutil.copytree(os.path.join(repo, package), os.path.join(folder, package),
-                        ignore=shutil.ignore_patterns("__pycache__", "test"))
-    return folder
+    return make_fixture(repo, None, folder)
 
 
-def make_fixture(repo: str, name: str, folder: str) -> str:
-    """Fixture ``name`` (a key of FAULTS) written into ``folder``; returns ``folder``."""
-    if name not in ALL_FIXTURES:
+def make_fixture(repo: str, name: Optional[str], folder: str) -> str:
+    """Fixture ``name`` (a key of ALL_FIXTURES; None: our solution as it is) written into
+    ``folder``; returns ``folder``."""
+    if name is not None and name not in ALL_FIXTURES:
         raise FixtureError(f"no fixture '{name}': known are {', '.join(ALL_FIXTURES)}")
-    copy_solution(repo, folder)
-    for edit in ALL_FIXTURES[name].edits:
-        apply(folder, edit, FILES)
-    return folder
+    edits = ALL_FIXTURES[name].edits if name is not None else ()
+    return make(folder, [os.path.join(repo, p) for p in RB1_PACKAGES], edits, FILES,
+                left_out=("__pycache__", "test"))
 
 
 # --- what each fault's evidence must show -------------------------------------------------

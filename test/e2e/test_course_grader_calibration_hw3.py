@@ -4,19 +4,15 @@ course_grader grade me495_hw3 DIR/* --jobs 2 --only <scenarios> --summary``, eac
 full marks on what its batch grades, the report saying what the grader did to run it as
 its README says (unpaused a paused world, started the flip node by hand) and how it read
 the world (models by their uri)."""
-import csv
-import json
 import os
-import shutil
-import subprocess
 
 import pytest
 from course_grader import course as course_file
+from grading import Batch
 
 from hw3_fixtures import CORRECT_BY_THE_ASSIGNMENT, make_fixture
 
 JOBS = 2
-BATCH_TIMEOUT = 900      # s: one batch command, bounded
 # name: (scenarios graded, fixtures); every fixture once
 BATCHES = {
     "files_and_world": (("layout", "world"),
@@ -28,35 +24,18 @@ BATCHES = {
 RESULTS = os.path.join("test_results", "e2e", "course_grader", "calibration_hw3")
 
 
-class Batch:
+class CalibrationBatch(Batch):
     def __init__(self, repo, folder, name):
-        scenarios, fixtures = BATCHES[name]
-        self.scenarios = scenarios
+        self.scenarios, fixtures = BATCHES[name]
         submissions = [make_fixture(repo, f, os.path.join(folder, f)) for f in fixtures]
-        self.out = os.path.join(repo, RESULTS, name)
-        shutil.rmtree(self.out, ignore_errors=True)
-        csv_path = os.path.join(self.out, "scores.csv")
-        done = subprocess.run(
-            ["rosrun", "course_grader", "grade", "me495_hw3", *submissions, "--jobs", str(JOBS),
-             "--out", self.out, "--csv", csv_path, "--only", *scenarios, "--summary"],
-            capture_output=True, text=True, timeout=BATCH_TIMEOUT, check=False)
-        os.makedirs(self.out, exist_ok=True)
-        with open(os.path.join(self.out, "batch.log"), "w", encoding="utf-8") as log:
-            log.write(done.stdout + done.stderr)
-        assert done.returncode == 0, done.stdout + done.stderr
-        self.stdout = done.stdout
-        with open(csv_path, encoding="utf-8", newline="") as stream:
-            self.rows = {row["name"]: row for row in csv.DictReader(stream)}
-
-    def items(self, fixture):
-        with open(os.path.join(self.out, fixture, "report.json"), encoding="utf-8") as stream:
-            return {item["id"]: item for item in json.load(stream)["items"]}
+        super().__init__("me495_hw3", submissions, os.path.join(repo, RESULTS, name),
+                         "--jobs", str(JOBS), "--only", *self.scenarios, "--summary")
 
 
 @pytest.fixture(scope="module")
 def batches(repo, tmp_path_factory):
     folder = tmp_path_factory.mktemp("hw3_calibration")
-    return {name: Batch(repo, str(folder / name), name) for name in BATCHES}
+    return {name: CalibrationBatch(repo, str(folder / name), name) for name in BATCHES}
 
 
 def batch_of(fixture):

@@ -11,15 +11,11 @@ In the rotate batch, one fixture's service never answers and ignores SIGINT and 
 scenario is killed at the batch's scenario limit while the others, graded beside it, keep
 their scores; the batch takes less than its submissions one after the other, and no process
 of it is left running."""
-import csv
-import json
 import os
-import shutil
-import subprocess
-import time
 
 import pytest
 from course_grader import course as course_file
+from grading import Batch
 
 from rb1_fault_fixtures import (ALL_FIXTURES, SCALED_SLACK, check_evidence, make_fixture,
                                 processes_mentioning, processes_reading)
@@ -32,7 +28,6 @@ JOBS = 2
 # the hang started fifth)
 ROTATE_JOBS = 3
 STARTED_FIRST = ("node_hangs",)
-BATCH_TIMEOUT = 900      # s: one batch command, bounded
 # s: the rotate batch's scenario limit: the hanging fixture is stopped at it; the others'
 # three turns took at most 37 s on two busy cores
 ROTATE_LIMIT = 60.0
@@ -66,8 +61,8 @@ def batch_processes():
         variable.startswith(MARKER.encode()) for variable in environ.split(b"\0")))
 
 
-class Batch:
-    """One batch command's CSV rows and reports, by fixture name."""
+class FaultBatch(Batch):
+    """One batch of BATCHES graded: the CSV's rows and reports, by fixture name."""
 
     def __init__(self, repo, folder, name):
         scenarios, limit, fixtures = BATCHES[name]
@@ -75,37 +70,18 @@ class Batch:
         submissions = [make_fixture(repo, fixture, os.path.join(
             folder, "1_first" if fixture in STARTED_FIRST else "2_then", fixture))
             for fixture in fixtures]
-        self.out = os.path.join(repo, RESULTS, name)
-        shutil.rmtree(self.out, ignore_errors=True)
-        csv_path = os.path.join(self.out, "scores.csv")
-        jobs = ROTATE_JOBS if name == "rotate" else JOBS
-        command = ["rosrun", "course_grader", "grade", "rb1", *submissions, "--jobs", str(jobs),
-                   "--out", self.out, "--csv", csv_path]
+        options = ["--jobs", str(ROTATE_JOBS if name == "rotate" else JOBS)]
         if scenarios:
-            command += ["--only", *scenarios]
+            options += ["--only", *scenarios]
         if limit is not None:
-            command += ["--scenario-limit", str(limit)]
-        started = time.monotonic()
-        done = subprocess.run(command, capture_output=True, text=True, timeout=BATCH_TIMEOUT,
-                              check=False)
-        self.seconds = time.monotonic() - started
-        self.stdout = done.stdout
-        os.makedirs(self.out, exist_ok=True)
-        with open(os.path.join(self.out, "batch.log"), "w", encoding="utf-8") as log:
-            log.write(done.stdout + done.stderr)
-        assert done.returncode == 0, done.stdout + done.stderr
-        with open(csv_path, encoding="utf-8", newline="") as stream:
-            self.rows = {row["name"]: row for row in csv.DictReader(stream)}
-
-    def items(self, fixture):
-        with open(os.path.join(self.out, fixture, "report.json"), encoding="utf-8") as stream:
-            return {item["id"]: item for item in json.load(stream)["items"]}
+            options += ["--scenario-limit", str(limit)]
+        super().__init__("rb1", submissions, os.path.join(repo, RESULTS, name), *options)
 
 
 @pytest.fixture(scope="module")
 def batches(repo, tmp_path_factory):
     folder = tmp_path_factory.mktemp("fault_batches")
-    graded = {name: Batch(repo, str(folder / name), name) for name in BATCHES}
+    graded = {name: FaultBatch(repo, str(folder / name), name) for name in BATCHES}
     for batch in graded.values():
         print(f"batch {batch.fixtures} --only {' '.join(batch.scenarios) or '(all)'}: "
               f"{batch.seconds:.0f} s")

@@ -14,8 +14,8 @@ from concurrent.futures import ThreadPoolExecutor
 
 import pytest
 from grading import grade
+from hw3_fixtures import make_fixture
 
-HW3_PACKAGES = ("diff_drive", "arm_move")
 PAUSED_ARG = re.compile(r'\s*<arg name="paused" default=[^>]*/>\n')
 PAUSED_VALUE = '<arg name="paused" value="$(arg paused)"/>'
 # the line of arm_move's mover the step fixture answers before: success, nothing planned
@@ -23,15 +23,6 @@ STEP_LINE = "        target = (request.position.x, request.position.y, request.p
 STEP_LIE = "        return Codes.SUCCESS, \"step: done\"\n"
 FLIP_POINTS = 100         # the flip plot draws at least this many samples of its 20 s
 SVG = "{http://www.w3.org/2000/svg}"
-
-
-def copy_solution(repo, folder):
-    """Our packages as a student hands them in (arm.test included: the grader runs it)."""
-    os.makedirs(folder)
-    for package in HW3_PACKAGES:
-        shutil.copytree(os.path.join(repo, package), os.path.join(folder, package),
-                        ignore=shutil.ignore_patterns("__pycache__", "doc"))
-    return folder
 
 
 def without_paused(submission):
@@ -71,7 +62,7 @@ def gradings(repo, tmp_path_factory):
     grading that fails fails the tests that use it."""
     jobs = {}
     for name, (folder, fault, options) in GRADINGS.items():
-        submission = copy_solution(repo, str(tmp_path_factory.mktemp("hw3") / name))
+        submission = make_fixture(repo, None, str(tmp_path_factory.mktemp("hw3") / name))
         if fault is not None:
             fault(submission)
         results = os.path.join(repo, "test_results", "e2e", "course_grader_hw3", folder)

@@ -27,24 +27,22 @@ def _declared(env: Dict[str, str], package: str, launch_file: str) -> List[str]:
     return ros_run.declared_args(os.path.join(found, "launch", launch_file) if found else "")
 
 
-def _launch_args(env: Dict[str, str], package: str, launch_file: str,
-                 headless: Optional[Dict[str, str]] = None) -> List[str]:
+def _headless_args(declared: List[str], headless: Dict[str, str]) -> List[str]:
     """The course's headless arguments (gui:=false) that the launch file declares
     (headless either way: no DISPLAY)."""
-    declared = _declared(env, package, launch_file)
-    headless = {"gui": "false"} if headless is None else headless
     return [f"{name}:={value}" for name, value in headless.items() if name in declared]
 
 
 @dataclass
 class CommandPlan:
     """A guide's command as it runs for this submission: the arguments its launch file
-    declares, and for each it does not, the node that starts that part by hand (or none);
-    what was done, in words for the report."""
+    declares (``declared``), the guide's that it passes, and for each it does not, the node
+    that starts that part by hand (or none); what was done, in words for the report."""
 
     args: List[str]
     by_hand: List[Tuple[str, str]]     # (package, node)
     notes: List[str]
+    declared: List[str]
 
 
 def plan_command(course: Course, key: str, env: Dict[str, str],
@@ -53,28 +51,28 @@ def plan_command(course: Course, key: str, env: Dict[str, str],
     ``flip:=true`` goes to a launch file with a ``flip`` argument; otherwise the part it
     starts is started by hand (course ``by_hand``), as the submission's README says."""
     package, launch_file = course.commands[key]
-    declared = _declared(env, package, launch_file)
-    plan = CommandPlan([], [], [])
+    plan = CommandPlan([], [], [], _declared(env, package, launch_file))
     for arg in course.command_args.get(key, []):
         name = arg.split(":=")[0]
-        if name in declared:
+        if name in plan.declared:
             plan.args.append(arg)
             continue
+        not_passed = f"{launch_file} declares no '{name}' argument, so '{arg}' was not passed"
         hand = course.by_hand.get(name)
-        found = submission.sourced_find(env, hand[0]) if hand else None
+        if hand is None:
+            plan.notes.append(not_passed)
+            continue
+        hand_package, word = hand
+        found = submission.sourced_find(env, hand_package)
         node = instructions.node_started_by_hand(
-            readmes, hand[0], hand[1], layout_checks.runnable_nodes(found) if found else []) \
-            if hand else None
+            readmes, hand_package, word, layout_checks.runnable_nodes(found) if found else [])
         if node:
-            plan.by_hand.append((hand[0], node))
-            plan.notes.append(f"{launch_file} declares no '{name}' argument, so '{arg}' was "
-                              f"not passed; the grader ran 'rosrun {hand[0]} {node}' after it, "
-                              "as the submission's README (or its node's name) says")
+            plan.by_hand.append((hand_package, node))
+            plan.notes.append(f"{not_passed}; the grader ran 'rosrun {hand_package} {node}' "
+                              "after it, as the submission's README (or its node's name) says")
         else:
-            plan.notes.append(f"{launch_file} declares no '{name}' argument, so '{arg}' was "
-                              "not passed" + (f", and no node of {hand[0]} named for "
-                                              f"'{hand[1]}' was found to run by hand"
-                                              if hand else ""))
+            plan.notes.append(f"{not_passed}, and no node of {hand_package} named for "
+                              f"'{word}' was found to run by hand")
     return plan
 
 
@@ -120,9 +118,9 @@ def scenario_run(course: Course, scenario: str, env: Dict[str, str],
                 names.append(key)
                 # under a screen the command runs as typed: its windows (rviz, the sliders)
                 # are what the scenario grades and pictures
-                headless = [] if spec.display else \
-                    _launch_args(env, package, launch_file, course.headless_args)
                 plan = plan_command(course, key, env, list(readmes))
+                headless = [] if spec.display else \
+                    _headless_args(plan.declared, course.headless_args)
                 said += plan.notes
                 session.launch(key, package, launch_file, headless + plan.args)
                 for hand_package, node in plan.by_hand:

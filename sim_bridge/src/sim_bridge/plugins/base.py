@@ -14,6 +14,7 @@ from typing import Any, Callable, Optional, Sequence, Tuple
 import genpy
 import numpy as np
 import pybullet as pb
+from geometry_msgs.msg import Vector3, WrenchStamped
 
 from sim_bridge.gazebo_tags import PluginSpec
 from sim_bridge.poses import pose6_to_position_quaternion
@@ -160,6 +161,15 @@ def stamp(now_ns: int) -> genpy.Time:
     return genpy.Time(now_ns // 1_000_000_000, now_ns % 1_000_000_000)
 
 
+def wrench_stamped(now_ns: int, frame_id: str, force, torque) -> WrenchStamped:
+    """A geometry_msgs/WrenchStamped of two 3-vectors, stamped with simulated time."""
+    message = WrenchStamped()
+    message.header.stamp, message.header.frame_id = stamp(now_ns), frame_id
+    message.wrench.force = Vector3(*(float(v) for v in force))
+    message.wrench.torque = Vector3(*(float(v) for v in torque))
+    return message
+
+
 class Plugin:
     """Base of model plugins and sensor plugins."""
 
@@ -249,6 +259,19 @@ class Plugin:
             close_all()
 
 
+def element_pose(element, what: str):
+    """(position, quaternion) of an element's ``<pose>`` (x y z roll pitch yaw; none: the
+    identity); ``what`` names the element in the error."""
+    text = element.findtext("pose")
+    try:
+        pose = tuple(float(v) for v in text.split()) if text else (0.0,) * 6
+    except ValueError:
+        pose = ()
+    if len(pose) != 6:
+        raise PluginError(f"{what}: <pose> '{text}' needs 6 numbers")
+    return pose6_to_position_quaternion(pose)
+
+
 class SensorPlugin(Plugin):
     """A sensor's plugin: the sensor's link and its ``<pose>`` in the link's frame, and where
     that is in the world now (from the link's true pose, rotation included)."""
@@ -259,11 +282,8 @@ class SensorPlugin(Plugin):
         if self.link not in context.robot.link_index:
             raise PluginError(f"sensor '{sensor.name}' is on link '{self.link}', which the "
                               "model does not have")
-        pose_text = sensor.element.findtext("pose")
-        pose = tuple(float(v) for v in pose_text.split()) if pose_text else (0.0,) * 6
-        if len(pose) != 6:
-            raise PluginError(f"sensor '{sensor.name}': <pose> needs 6 numbers")
-        self.sensor_position, self.sensor_orientation = pose6_to_position_quaternion(pose)
+        self.sensor_position, self.sensor_orientation = element_pose(
+            sensor.element, f"sensor '{sensor.name}'")
 
     def sensor_pose(self):
         """(position, quaternion) of the sensor in the world."""

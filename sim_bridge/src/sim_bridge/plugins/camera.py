@@ -36,8 +36,8 @@ import numpy as np
 import pybullet as pb
 from sensor_msgs.msg import CameraInfo, Image, PointCloud2, PointField
 
-from sim_bridge.plugins.base import Plugin, PluginError, Rate, SensorPlugin, stamp
-from sim_bridge.poses import pose6_to_position_quaternion
+from sim_bridge.plugins.base import (Plugin, PluginError, Rate, SensorPlugin, element_pose,
+                                     stamp)
 
 # Gazebo's image formats sim_bridge renders → (ROS encoding, channels)
 FORMATS = {"R8G8B8": ("rgb8", 3), "RGB_INT8": ("rgb8", 3), "B8G8R8": ("bgr8", 3),
@@ -339,15 +339,8 @@ class MultiCamera(Plugin):
                                  f"'{name}' is named neither left nor right, so "
                                  "gazebo_ros_multicamera publishes nothing of it; ignored")
                 continue
-            pose_text = element.findtext("pose")
-            try:
-                pose = tuple(float(v) for v in pose_text.split()) if pose_text else (0.0,) * 6
-            except ValueError:
-                pose = ()
-            if len(pose) != 6:
-                raise PluginError(f"sensor '{sensor.name}': camera '{name}': <pose> "
-                                  f"'{pose_text}' needs 6 numbers")
-            position, orientation = pose6_to_position_quaternion(pose)
+            position, orientation = element_pose(
+                element, f"sensor '{sensor.name}': camera '{name}'")
             head = Head(element, position, orientation, f"/{side}",
                         baseline if side == "right" else 0.0)
             self.cameras.append(Camera(context, spec, sensor, head))

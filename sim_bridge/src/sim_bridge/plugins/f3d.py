@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from geometry_msgs.msg import WrenchStamped
 
-from sim_bridge.plugins.base import Plugin, PluginError, stamp
+from sim_bridge.plugins.base import Plugin, PluginError, wrench_stamped
 
 
 class F3D(Plugin):
@@ -44,9 +44,4 @@ class F3D(Plugin):
         if not self.context.bus.listened(self.output):
             return
         force, torque = self.context.applied_wrench(self.body)
-        message = WrenchStamped()
-        message.header.stamp, message.header.frame_id = stamp(now_ns), self.frame_id
-        wrench = message.wrench
-        wrench.force.x, wrench.force.y, wrench.force.z = (float(v) for v in force)
-        wrench.torque.x, wrench.torque.y, wrench.torque.z = (float(v) for v in torque)
-        self.output.publish(message)
+        self.output.publish(wrench_stamped(now_ns, self.frame_id, force, torque))

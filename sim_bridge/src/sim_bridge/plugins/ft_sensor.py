@@ -25,7 +25,7 @@ import numpy as np
 import pybullet as pb
 from geometry_msgs.msg import WrenchStamped
 
-from sim_bridge.plugins.base import Plugin, PluginError, Rate, stamp
+from sim_bridge.plugins.base import Plugin, PluginError, Rate, wrench_stamped
 from sim_bridge.poses import quaternion_matrix
 
 
@@ -72,12 +72,7 @@ class FTSensor(Plugin):
         if self.noise > 0:
             force = force + self.context.rng.normal(0.0, self.noise, 3)
             torque = torque + self.context.rng.normal(0.0, self.noise, 3)
-        message = WrenchStamped()
-        message.header.stamp, message.header.frame_id = stamp(now_ns), self.frame_id
-        wrench = message.wrench
-        wrench.force.x, wrench.force.y, wrench.force.z = (float(v) for v in force)
-        wrench.torque.x, wrench.torque.y, wrench.torque.z = (float(v) for v in torque)
-        self.output.publish(message)
+        self.output.publish(wrench_stamped(now_ns, self.frame_id, force, torque))
 
     def reset(self, now_ns: int) -> None:
         self.rate.reset(now_ns)
