@@ -20,6 +20,8 @@ from urdf_tools import UrdfError
 PACKAGE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 REPO = os.path.dirname(PACKAGE_DIR)
 PLATFORM_SETUP = os.path.join(REPO, ".ws", "platform", "devel", "setup.bash")
+RERUN_SUFFIX = "-rerun"   # a scenario run again after a platform fault logs in <its logs>-rerun
+
 
 def _declared(env: Dict[str, str], package: str, launch_file: str) -> List[str]:
     """The arguments the submission's launch file declares."""
@@ -90,9 +92,22 @@ def scenario_results(course: Course, scenario: str, env: Dict[str, str],
                      log_dir: str, out: str = "", readmes: Tuple[str, ...] = (),
                      packages: Tuple[str, ...] = ()) -> List[ItemResult]:
     """``scenario_run`` with the platform's faults told from the submission's
-    (``packages``: the submission's own)."""
-    return _platform_faults(scenario_run(course, scenario, env, log_dir, out, readmes),
-                            log_dir, packages)
+    (``packages``: the submission's own). A run the platform failed (a crash of rviz or of
+    the simulator, say) is run once more, as a teaching assistant would, its logs beside
+    the first's; the second run's results stand, saying so."""
+    results = _platform_faults(scenario_run(course, scenario, env, log_dir, out, readmes),
+                               log_dir, packages)
+    fault = next((r.platform for r in results if r.platform), "")
+    if not fault:
+        return results
+    rerun_dir = f"{log_dir}{RERUN_SUFFIX}"
+    results = _platform_faults(scenario_run(course, scenario, env, rerun_dir, out, readmes),
+                               rerun_dir, packages)
+    for result in results:
+        result.notes.append(f"run twice: the first run failed for the platform ({fault}; "
+                            f"logs in {log_dir}); this is the second run's (logs in "
+                            f"{rerun_dir})")
+    return results
 
 
 def scenario_run(course: Course, scenario: str, env: Dict[str, str],

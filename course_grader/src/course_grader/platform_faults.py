@@ -1,7 +1,9 @@
 """Faults of the grading platform, told from the submission's: a scenario whose logs hold a
 Python traceback raised in the platform's own code (the simulator, the compat packages, the
-grader), or a launch that stops at a package the platform lacks (``Resource not found`` of a
-package the submission does not hold). Such a scenario's lost points are not the student's:
+grader), a launch that stops at a package the platform lacks (``Resource not found`` of a
+package the submission does not hold), or a program of the platform (rviz, the sliders, the
+simulator: its command under /usr or the platform's folders) killed by a signal, as a
+crash or the kernel's out-of-memory killer does. Such a scenario's lost points are not the student's:
 the items are marked "platform", left out of the points possible, and the grade is
 incomplete. No ROS here."""
 from __future__ import annotations
@@ -17,6 +19,10 @@ REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
 PLATFORM_DIRS = ("sim_bridge", "compat", "courses", "urdf_tools", "course_grader", ".ws")
 FRAME = re.compile(r'^\s*File "([^"]+)", line (\d+)')
 MISSING = re.compile(r"Resource not found: ([A-Za-z0-9_]+)")
+# roslaunch's line for a node that ended on its own: "[rviz-3] process has died [pid 22396,
+# exit code -11, cmd /usr/lib/rviz/rviz -d ... __name:=rviz ...]"
+DIED = re.compile(r"\[([^\]]+)\] process has died \[pid \d+, exit code (-\d+), cmd (\S+)")
+SYSTEM_DIRS = ("/usr/", "/bin/", "/lib/")
 # a log this big is read from its end only
 TAIL_BYTES = 2_000_000
 
@@ -24,6 +30,20 @@ TAIL_BYTES = 2_000_000
 def _is_platform(path: str) -> bool:
     path = os.path.realpath(path)
     return any(path.startswith(os.path.join(REPO, folder) + os.sep) for folder in PLATFORM_DIRS)
+
+
+def killed_platform_program(lines: List[str]) -> Optional[str]:
+    """The first platform program roslaunch saw killed by a signal: "rviz-3 (exit code
+    -11, /usr/lib/rviz/rviz)"; None when there is none. A submission's own node that
+    crashes is the submission's."""
+    for line in lines:
+        match = DIED.search(line)
+        if not match:
+            continue
+        name, code, command = match.groups()
+        if _is_platform(command) or os.path.realpath(command).startswith(SYSTEM_DIRS):
+            return f"{name} (exit code {code}, {command})"
+    return None
 
 
 def _lines(path: str) -> List[str]:
@@ -66,6 +86,10 @@ def find(log_dir: str, submission_packages: Iterable[str]) -> Optional[str]:
         found = traceback_in_platform(lines)
         if found:
             return f"a traceback in the grading platform ({found}; {os.path.basename(path)})"
+        killed = killed_platform_program(lines)
+        if killed:
+            return (f"a program of the grading platform was killed by a signal: {killed}; "
+                    f"{os.path.basename(path)}")
         for line in lines:
             match = MISSING.search(line)
             if match and match.group(1) not in own:

@@ -26,11 +26,12 @@ POLL = 0.1                # s between looks at a condition
 LOG_LINES = 12            # lines of a launch's log kept to explain a failure
 # held while an Xvfb starts (see Session.start_display); tools/headless.py takes it too
 XVFB_START_LOCK = "/tmp/.xvfb-start.lock"
+SERVICES = ("roscore", "xvfb")   # what the scenario's launches and nodes use: stopped last
 SESSION_TAG = "COURSE_GRADER_SESSION"   # environment variable naming a scenario's processes
 COMMAND_CHARS = 200       # characters of a killed process's command line kept for the report
 # lines of a log that explain a failure
 TROUBLE = re.compile(r"\berror|fatal|traceback|exception|failed|not found|process has died|"
-                     r"refus", re.IGNORECASE)
+                     r"refus|connection broke|required process", re.IGNORECASE)
 
 
 class RunError(RuntimeError):
@@ -209,10 +210,22 @@ class Session:
         wait_until(published, timeout, f"a publisher of {topic}")
 
     def check_alive(self) -> None:
+        """Raises RunError naming the first process that has ended, with the lines of its
+        log that say why (roslaunch's "process has died", a traceback's last line)."""
         for name, process, log_path in self.processes:
             if process.poll() is not None:
+                why = "; ".join(line.strip() for line in self._log_trouble(log_path)[-3:])
                 raise RunError(f"'{name}' ended (exit status {process.returncode}) "
-                               f"before the checks; see {log_path}")
+                               f"before the checks" + (f": {why}" if why else "")
+                               + f"; see {log_path}")
+
+    @staticmethod
+    def _log_trouble(log_path: str) -> List[str]:
+        try:
+            with open(log_path, encoding="utf-8", errors="replace") as log:
+                return [line.rstrip() for line in log if TROUBLE.search(line)]
+        except OSError:
+            return []
 
     def probe(self, scenario: str, config_path: str, timeout: float,
               folder: str = "") -> Dict:
@@ -235,17 +248,25 @@ class Session:
         return json.loads(lines[-1])
 
     def stop(self) -> None:
-        """SIGINT to every process group (launches first, roscore last), then SIGKILL; then
-        SIGKILL to every process still tagged with this scenario (a node in a session of its
-        own that ignored the signals)."""
-        for _, process, _ in reversed(self.processes):
+        """SIGINT to the launches' and nodes' process groups, then SIGKILL; then the same to
+        the virtual screen and roscore (stopped after the windows and nodes that use them,
+        so that a log's "X11 connection broke" or a lost master means a fault, not the
+        stop); then SIGKILL to every process still tagged with this scenario (a node in a
+        session of its own that ignored the signals)."""
+        services = [p for p in self.processes if p[0] in SERVICES]
+        self._stop_all([p for p in self.processes if p[0] not in SERVICES])
+        self._stop_all(services)
+        self.strays = kill_tagged(self.tag, self.limits["stop"])
+
+    def _stop_all(self, processes: List[tuple]) -> None:
+        for _, process, _ in reversed(processes):
             if process.poll() is None:
                 try:
                     os.killpg(process.pid, signal.SIGINT)
                 except ProcessLookupError:
                     pass
         deadline = time.monotonic() + self.limits["stop"]
-        for _, process, _ in reversed(self.processes):
+        for _, process, _ in reversed(processes):
             try:
                 process.wait(max(0.0, deadline - time.monotonic()))
             except subprocess.TimeoutExpired:
@@ -255,7 +276,6 @@ class Session:
             except (ProcessLookupError, PermissionError):
                 pass
             process.wait()
-        self.strays = kill_tagged(self.tag, self.limits["stop"])
 
     def trouble(self, names: Optional[List[str]] = None) -> List[str]:
         """The lines of the launches' logs that explain a failure (errors, tracebacks)."""
@@ -263,10 +283,5 @@ class Session:
         for name, _, log_path in self.processes:
             if names is not None and name not in names:
                 continue
-            try:
-                with open(log_path, encoding="utf-8", errors="replace") as log:
-                    lines = [line.rstrip() for line in log]
-            except OSError:
-                continue
-            found += [f"{name}: {line}" for line in lines if TROUBLE.search(line)][-LOG_LINES:]
+            found += [f"{name}: {line}" for line in self._log_trouble(log_path)][-LOG_LINES:]
         return found

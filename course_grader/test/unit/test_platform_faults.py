@@ -53,3 +53,49 @@ def test_platform_items_leave_the_points_possible_and_the_grade_is_incomplete(tm
     untouched = [judge(item, [Check("c", True, "ok")]) for item in rb1.items_of("rotate")]
     grader._platform_faults(untouched, str(tmp_path), ())
     assert not any(r.platform for r in untouched)       # nothing lost: nothing to excuse
+
+
+def test_a_platform_program_killed_by_a_signal_is_the_platforms(tmp_path):
+    """rviz crashing under the virtual screen (a required node: its launch ends) is not the
+    student's; their own node killed by a signal, or rviz ending with a status, is."""
+    died = "[rviz-3] process has died [pid 22396, exit code {code}, cmd {cmd} -d x.rviz]\n"
+    (tmp_path / "display.log").write_text(died.format(code=-11, cmd="/usr/lib/rviz/rviz"))
+    found = platform_faults.find(str(tmp_path), ["my_rb1_description"])
+    assert "killed by a signal: rviz-3 (exit code -11, /usr/lib/rviz/rviz)" in found
+    student = "/tmp/ws/src/my_rb1_ros/nodes/rotate_service"
+    (tmp_path / "display.log").write_text(died.format(code=-11, cmd=student))
+    assert platform_faults.find(str(tmp_path), ["my_rb1_ros"]) is None
+    (tmp_path / "display.log").write_text(died.format(code=1, cmd="/usr/lib/rviz/rviz"))
+    assert platform_faults.find(str(tmp_path), ["my_rb1_description"]) is None
+
+
+def test_a_scenario_the_platform_failed_is_run_once_more(tmp_path, monkeypatch):
+    """The second run's results stand, saying that the first run failed and where its logs
+    are; a run that failed for the submission's fault is not repeated."""
+    rb1 = course_file.load("rb1")
+    runs = []
+
+    def run(course, scenario, env, log_dir, out="", readmes=()):
+        runs.append(log_dir)
+        os.makedirs(log_dir, exist_ok=True)
+        if len(runs) == 1:
+            with open(os.path.join(log_dir, "display.log"), "w", encoding="utf-8") as log:
+                log.write("[rviz-3] process has died [pid 1, exit code -6, cmd /usr/bin/rviz]\n")
+            return [judge(item, [Check("c", False, "ended")]) for item in rb1.items_of(scenario)]
+        return [judge(item, [Check("c", True, "ok")]) for item in rb1.items_of(scenario)]
+    monkeypatch.setattr(grader, "scenario_run", run)
+    results = grader.scenario_results(rb1, "display", {}, str(tmp_path / "display"))
+    assert runs == [str(tmp_path / "display"), str(tmp_path / "display") + grader.RERUN_SUFFIX]
+    assert all(r.passed and not r.platform for r in results)
+    assert all("run twice: the first run failed for the platform" in r.notes[-1]
+               for r in results)
+    runs.clear()
+    grader.scenario_results(rb1, "display", {}, str(tmp_path / "again"))
+    assert len(runs) == 2          # the first run of this folder failed again for the platform
+    student = tmp_path / "student"
+    runs.clear()
+    monkeypatch.setattr(grader, "scenario_run", lambda course, scenario, env, log_dir, *a: (
+        runs.append(log_dir) or [judge(i, [Check("c", False, "wrong")])
+                                 for i in rb1.items_of(scenario)]))
+    grader.scenario_results(rb1, "display", {}, str(student))
+    assert len(runs) == 1

@@ -133,6 +133,15 @@ class Limit:
 
 
 @dataclass(frozen=True)
+class Mimic:
+    """A ``<mimic>``: the joint's position is ``multiplier`` * ``joint``'s + ``offset``."""
+
+    joint: str
+    multiplier: float = 1.0
+    offset: float = 0.0
+
+
+@dataclass(frozen=True)
 class Joint:
     name: str
     type: str
@@ -143,6 +152,7 @@ class Joint:
     limit: Optional[Limit] = None
     damping: float = 0.0
     friction: float = 0.0
+    mimic: Optional[Mimic] = None
 
     @property
     def movable(self) -> bool:
@@ -469,9 +479,15 @@ def _joint(joint, source: str) -> Joint:
         damping, friction = _finite([joint.dynamics.damping or 0.0,
                                      joint.dynamics.friction or 0.0],
                                     f"joint '{name}' dynamics (damping friction)", source)
+    mimic = None
+    if joint.mimic is not None and joint.mimic.joint:
+        multiplier, offset = _finite(
+            [1.0 if joint.mimic.multiplier is None else joint.mimic.multiplier,
+             joint.mimic.offset or 0.0], f"joint '{name}' mimic (multiplier offset)", source)
+        mimic = Mimic(joint.mimic.joint, multiplier, offset)
     return Joint(name, joint.type, joint.parent, joint.child,
                  _origin(joint.origin, f"joint '{name}'", source), axis, limit, damping,
-                 friction)
+                 friction, mimic)
 
 
 def _transmission(element: ET.Element) -> Transmission:
