@@ -49,7 +49,7 @@ apt_packages=(
   liburdfdom-tools
   tf-tools tf2-tools libnodeletlib-tools python3-nodelet libnodeletlib-dev topic-tools
   python3-topic-tools libtopic-tools-dev librviz-dev librobot-state-publisher-dev
-  python3-tf-conversions libros-rosgraph-msgs-dev libactionlib-dev
+  python3-tf-conversions libros-rosgraph-msgs-dev libactionlib-dev python3-pykdl
   xvfb xauth x11-utils xdotool imagemagick
   python3-venv python3-pip
 )
