@@ -17,7 +17,8 @@ from typing import Dict, List, Optional, Tuple
 
 from urdf_tools import RobotModel as Urdf
 
-LOG = logging.getLogger(__name__)
+# rospy shows the rosout.* loggers on the console and /rosout
+LOG = logging.getLogger("rosout.moveit_core")
 
 VIRTUAL_JOINT_TYPES = ("fixed", "floating", "planar")
 

@@ -30,7 +30,8 @@ from moveit_core.robot_model import RobotModel, RobotModelError
 from urdf_tools import Joint
 from urdf_tools.kinematics import rpy_matrix
 
-LOG = logging.getLogger(__name__)
+# rospy shows the rosout.* loggers on the console and /rosout
+LOG = logging.getLogger("rosout.moveit_kinematics")
 
 # the plugins a kinematics.yaml names that this solver answers for
 KDL_PLUGIN = "kdl_kinematics_plugin/KDLKinematicsPlugin"
