@@ -89,7 +89,7 @@ else
   rm -f "$venv/bin/xacro"  # the link made below: pip must not write through it
   "$venv/bin/python3" -m pip install --quiet --disable-pip-version-check -r "$requirements" 2>&1 \
     | grep -v "is ignored: it is neither a file nor a directory" || true
-  "$venv/bin/python3" -c "import pybullet, xacro, ompl, pytest" 2>/dev/null \
+  "$venv/bin/python3" -c "import pybullet, xacro, ompl, fcl, pytest" 2>/dev/null \
     || { echo "setup: venv: the pinned packages do not import" >&2; exit 1; }
   echo "$want" > "$stamp"
 fi

@@ -43,7 +43,6 @@ pybullet differs from Gazebo in ways that matter here, and this module hides the
 """
 from __future__ import annotations
 
-import functools
 import os
 import tempfile
 import xml.etree.ElementTree as ET
@@ -58,6 +57,7 @@ from sim_bridge.materials import gazebo_colour
 from sim_bridge.mesh_files import MeshError, bounds, collision_fallback, loadable_file
 from sim_bridge.tyre_friction import Tyre
 from urdf_tools.kinematics import rpy_matrix
+from urdf_tools.mesh_uri import resolve_package_uri
 from urdf_tools.model import RobotModel, UrdfError
 
 # What a link without <inertial> weighs in pybullet: small against any real link, large
@@ -75,30 +75,6 @@ PYBULLET_ROBOT_NAME = "robot"
 
 Vec3 = Tuple[float, float, float]
 Quat = Tuple[float, float, float, float]
-
-
-def resolve_package_uri(uri: str, source: str) -> str:
-    """``package://pkg/path`` or ``file://path`` → a file path."""
-    if uri.startswith("file://"):
-        return uri[len("file://"):]
-    if not uri.startswith("package://"):
-        return uri
-    package, _, rest = uri[len("package://"):].partition("/")
-    import rospkg  # only descriptions with package:// meshes need a ROS environment
-    try:
-        return os.path.join(_package_path(package, os.environ.get("ROS_PACKAGE_PATH", "")),
-                            rest)
-    except rospkg.ResourceNotFound:
-        raise UrdfError(f"{source}: mesh '{uri}': ROS package '{package}' not found "
-                        "(is the workspace sourced?)") from None
-
-
-@functools.lru_cache(maxsize=256)
-def _package_path(package: str, ros_package_path: str) -> str:
-    """A ROS package's folder (rospkg crawls ROS_PACKAGE_PATH for each new RosPack, about
-    12 ms: once per package, not once per mesh). Not found is not remembered."""
-    import rospkg
-    return rospkg.RosPack().get_path(package)
 
 
 def mesh_path(uri: str, source: str) -> str:
