@@ -97,6 +97,7 @@ class RobotModel:
                                       "robot lacks")
         self.bounds = {j: _bounds(urdf.joints[j], (joint_limits or {}).get(j, {}))
                        for j in self.joint_order if urdf.joints[j].type in VARIABLE_TYPES}
+        self._chain_steps = [_step(urdf.joints[j]) for j in self.joint_order]
         self.groups: Dict[str, JointModelGroup] = {}
         for name in srdf.groups:
             self.groups[name] = self._group(name, ())
@@ -190,13 +191,23 @@ class RobotModel:
         return full
 
     def link_poses(self, positions: Mapping[str, float]) -> Dict[str, np.ndarray]:
-        """Each link's pose (4x4) in the root link's frame."""
+        """Each link's pose (4x4) in the root link's frame: the same transforms as
+        urdf_tools.kinematics.joint_transform, with each joint's origin and axis prepared
+        once (collision checks call this for every state they check)."""
         full = self.complete(positions)
         poses = {self.root_link: np.eye(4)}
-        for name in self.joint_order:
-            joint = self.urdf.joints[name]
-            poses[joint.child] = poses[joint.parent] @ joint_transform(
-                joint, full.get(name, 0.0))
+        for name, parent, child, origin, kind, axis, cross in self._chain_steps:
+            if kind == 0:
+                poses[child] = poses[parent] @ origin
+                continue
+            value = full.get(name, 0.0)
+            motion = np.eye(4)
+            if kind == 1:     # Rodrigues: R = I + sin(q) K + (1 - cos(q)) K^2
+                motion[:3, :3] += math.sin(value) * cross + (1.0 - math.cos(value)) * (
+                    cross @ cross)
+            else:
+                motion[:3, 3] = axis * value
+            poses[child] = poses[parent] @ origin @ motion
         return poses
 
     def within_bounds(self, positions: Mapping[str, float], margin: float = 0.0
@@ -205,6 +216,19 @@ class RobotModel:
         return [f"{j} = {v:.4f} (bounds {self.bounds[j].lower:.4f} to "
                 f"{self.bounds[j].upper:.4f})" for j, v in positions.items()
                 if j in self.bounds and not self.bounds[j].contains(v, margin)]
+
+
+def _step(joint: Joint) -> tuple:
+    """A joint prepared for link_poses: (name, parent, child, origin 4x4, kind (0 fixed,
+    1 revolute, 2 prismatic), unit axis, the axis' cross-product matrix)."""
+    origin = joint_transform(Joint(joint.name, "fixed", joint.parent, joint.child,
+                                   joint.origin))
+    axis = np.asarray(joint.axis, dtype=float)
+    axis = axis / (np.linalg.norm(axis) or 1.0)
+    cross = np.array([[0.0, -axis[2], axis[1]], [axis[2], 0.0, -axis[0]],
+                      [-axis[1], axis[0], 0.0]])
+    kind = {"revolute": 1, "continuous": 1, "prismatic": 2}.get(joint.type, 0)
+    return joint.name, joint.parent, joint.child, origin, kind, axis, cross
 
 
 def _children(urdf: Urdf) -> Dict[str, List[str]]:

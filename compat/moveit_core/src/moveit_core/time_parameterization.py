@@ -1,0 +1,107 @@
+"""Time stamps for a path of joint positions, as MoveIt's default request adapter
+(AddTimeParameterization: iterative parabolic time parameterization) gives them: every
+joint's speed within its limit times the velocity scaling factor, every acceleration within
+its limit times the acceleration scaling factor, at rest at both ends.
+
+The steps are IPTP's: each segment first gets the time its slowest joint needs at full
+speed; then, pass after pass, a waypoint whose acceleration (from the parabola through it
+and its neighbours) exceeds a limit has its two segments stretched, until none does.
+Velocities and accelerations of the waypoints are the finite differences. A joint without
+a speed or acceleration limit gets MoveIt's 1 rad/s and 1 rad/s^2. No ROS here.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import List, Optional, Sequence
+
+import numpy as np
+
+DEFAULT_VELOCITY = 1.0          # rad/s (m/s): MoveIt's for a joint without a limit
+DEFAULT_ACCELERATION = 1.0      # rad/s^2
+MAX_PASSES = 1000               # stretching passes; each makes progress or ends the loop
+STRETCH = 1.01                  # a stretched segment is this much longer than needed
+
+
+class TimingError(ValueError):
+    """A path that cannot be timed (not finite, or no limits); the message says why."""
+
+
+@dataclass
+class Timed:
+    times: np.ndarray             # s from the start, one per waypoint
+    positions: np.ndarray         # waypoints x joints
+    velocities: np.ndarray
+    accelerations: np.ndarray
+
+
+def scaling(value: float) -> float:
+    """A scaling factor as MoveIt's adapter reads it: 0 (unset) and anything outside
+    (0, 1] mean 1."""
+    return float(value) if 0.0 < value <= 1.0 else 1.0
+
+
+def time_path(positions: Sequence[Sequence[float]], max_velocity: Sequence[Optional[float]],
+              max_acceleration: Sequence[Optional[float]], velocity_scaling: float = 1.0,
+              acceleration_scaling: float = 1.0) -> Timed:
+    q = np.asarray(positions, dtype=float)
+    if q.ndim != 2 or len(q) == 0 or not np.all(np.isfinite(q)):
+        raise TimingError("a path needs at least one waypoint of finite positions")
+    velocity = np.array([v if v and v > 0 else DEFAULT_VELOCITY for v in max_velocity])
+    velocity = velocity * scaling(velocity_scaling)
+    acceleration = np.array([a if a and a > 0 else DEFAULT_ACCELERATION
+                             for a in max_acceleration]) * scaling(acceleration_scaling)
+    count = len(q)
+    if count == 1:
+        zeros = np.zeros_like(q)
+        return Timed(np.zeros(1), q, zeros, zeros.copy())
+    delta = np.diff(q, axis=0)
+    # each segment at least as long as its slowest joint needs at full speed
+    dt = np.max(np.abs(delta) / velocity, axis=1)
+    dt = np.maximum(dt, 1e-6)
+    for _ in range(MAX_PASSES):
+        stretched = False
+        for i in range(count):
+            before = dt[i - 1] if i > 0 else None
+            after = dt[i] if i < count - 1 else None
+            v_in = delta[i - 1] / before if before else np.zeros(q.shape[1])
+            v_out = delta[i] / after if after else np.zeros(q.shape[1])
+            span = (before or 0.0) + (after or 0.0)
+            needed = np.max(np.abs(v_out - v_in) / acceleration) * 2.0 / span
+            if needed > 1.0 + 1e-9:
+                # accelerations scale as 1/t^2: stretch both neighbours by sqrt of the excess
+                factor = np.sqrt(needed) * STRETCH
+                if before:
+                    dt[i - 1] *= factor
+                if after:
+                    dt[i] *= factor
+                stretched = True
+        if not stretched:
+            break
+    times = np.concatenate([[0.0], np.cumsum(dt)])
+    velocities = np.zeros_like(q)
+    accelerations = np.zeros_like(q)
+    for i in range(1, count - 1):
+        v_in, v_out = delta[i - 1] / dt[i - 1], delta[i] / dt[i]
+        velocities[i] = (v_in + v_out) / 2.0
+        accelerations[i] = (v_out - v_in) * 2.0 / (dt[i - 1] + dt[i])
+    accelerations[0] = delta[0] / dt[0] * 2.0 / dt[0]
+    accelerations[-1] = -delta[-1] / dt[-1] * 2.0 / dt[-1]
+    return Timed(times, q, velocities, accelerations)
+
+
+def limits_of(model, joints: Sequence[str]):
+    """The joints' speed and acceleration limits in the model's bounds (None: unlimited)."""
+    return ([model.bounds[j].max_velocity for j in joints],
+            [model.bounds[j].max_acceleration for j in joints])
+
+
+def joint_trajectory(timed: Timed, joints: List[str]):
+    """A trajectory_msgs/JointTrajectory of the timed path."""
+    import rospy
+    from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
+    message = JointTrajectory(joint_names=list(joints))
+    for t, p, v, a in zip(timed.times, timed.positions, timed.velocities, timed.accelerations):
+        message.points.append(JointTrajectoryPoint(
+            positions=p.tolist(), velocities=v.tolist(), accelerations=a.tolist(),
+            time_from_start=rospy.Duration.from_sec(float(t))))
+    return message

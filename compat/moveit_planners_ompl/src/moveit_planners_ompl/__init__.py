@@ -1,0 +1,1 @@
+"""MoveIt's OMPL planning pipeline in Python (see planner, goals, planner_configs)."""

@@ -1,0 +1,231 @@
+"""Goal constraints (moveit_msgs/Constraints) as MoveIt's constraint samplers read them:
+joint constraints give one joint-space goal (clamped into the bounds when the tolerance
+reaches them); a position constraint on a link (a sphere or box region, as
+moveit_commander writes for a pose or position target), with or without an orientation
+constraint, is sampled by the group's IK solver from random seeds; each sample must lie
+within the bounds, satisfy every constraint of the set and be collision-free.
+:func:`satisfied` checks a state against a constraint set, as the path checks do."""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Dict, List, Mapping, Optional, Tuple
+
+import numpy as np
+from geometry_msgs.msg import Pose
+from moveit_msgs.msg import Constraints, MoveItErrorCodes, OrientationConstraint
+from shape_msgs.msg import SolidPrimitive
+from tf.transformations import euler_from_matrix, random_rotation_matrix
+
+from moveit_core.planning_scene import PlanningScene, SceneError, pose_matrix
+
+GOAL_SAMPLES = 4            # valid IK goals gathered before the search starts
+MAX_IK_TRIES = 40           # IK attempts for one goal set
+
+
+class GoalError(ValueError):
+    """Goal constraints that cannot be used: ``code`` is MoveIt's error code."""
+
+    def __init__(self, code: int, message: str):
+        super().__init__(message)
+        self.code = code
+
+
+@dataclass
+class Goals:
+    states: List[Dict[str, float]] = field(default_factory=list)
+    ik_solutions: int = 0            # IK answers found, valid or not
+    collisions: List[Tuple[str, str]] = field(default_factory=list)
+
+
+def _region_center(constraint, scene: PlanningScene, poses) -> np.ndarray:
+    """Where a position constraint wants its link point, in the model frame."""
+    region = constraint.constraint_region
+    if not region.primitive_poses:
+        raise GoalError(MoveItErrorCodes.INVALID_GOAL_CONSTRAINTS,
+                        f"position constraint on '{constraint.link_name}' has no region")
+    frame = _frame(scene, constraint.header.frame_id, poses)
+    return (frame @ pose_matrix(region.primitive_poses[0], "region pose"))[:3, 3]
+
+
+def _frame(scene: PlanningScene, frame: str, poses) -> np.ndarray:
+    try:
+        return scene.frame_pose(frame, poses)
+    except SceneError as error:
+        raise GoalError(MoveItErrorCodes.FRAME_TRANSFORM_FAILURE, str(error)) from error
+
+
+def _inside(point: np.ndarray, constraint, scene: PlanningScene, poses) -> bool:
+    frame = _frame(scene, constraint.header.frame_id, poses)
+    region = constraint.constraint_region
+    for primitive, pose in zip(region.primitives, region.primitive_poses):
+        local = np.linalg.inv(frame @ pose_matrix(pose, "region pose")) @ np.append(point, 1.0)
+        dims = list(primitive.dimensions)
+        if primitive.type == SolidPrimitive.SPHERE and np.linalg.norm(local[:3]) <= dims[0]:
+            return True
+        if primitive.type == SolidPrimitive.BOX and np.all(np.abs(local[:3]) <= np.array(
+                dims[:3]) / 2):
+            return True
+        if primitive.type == SolidPrimitive.CYLINDER and abs(local[2]) <= dims[0] / 2 and \
+                np.linalg.norm(local[:2]) <= dims[1]:
+            return True
+    return False
+
+
+def _orientation_error(link_rotation: np.ndarray, constraint: OrientationConstraint,
+                       frame: np.ndarray) -> np.ndarray:
+    target = frame @ pose_matrix(Pose(orientation=constraint.orientation), "orientation")
+    difference = target[:3, :3].T @ link_rotation
+    if constraint.parameterization == OrientationConstraint.ROTATION_VECTOR:
+        angle = math.acos(max(-1.0, min(1.0, (np.trace(difference) - 1) / 2)))
+        if angle < 1e-12:
+            return np.zeros(3)
+        axis = np.array([difference[2, 1] - difference[1, 2], difference[0, 2] - difference[2, 0],
+                         difference[1, 0] - difference[0, 1]]) / (2 * math.sin(angle))
+        return np.abs(axis * angle)
+    full = np.eye(4)
+    full[:3, :3] = difference
+    return np.abs(np.array(euler_from_matrix(full, "sxyz")))
+
+
+def satisfied(scene: PlanningScene, positions: Mapping[str, float], constraints: Constraints,
+              poses=None) -> Optional[str]:
+    """None when ``positions`` satisfy the set; else which constraint they break."""
+    for joint in constraints.joint_constraints:
+        value = positions.get(joint.joint_name)
+        if value is None or not (joint.position - joint.tolerance_below - 1e-9 <= value <=
+                                 joint.position + joint.tolerance_above + 1e-9):
+            return f"joint '{joint.joint_name}' at {value} (wanted {joint.position:.4f})"
+    if not (constraints.position_constraints or constraints.orientation_constraints):
+        return None
+    poses = poses if poses is not None else scene.model.link_poses(positions)
+    for constraint in constraints.position_constraints:
+        link = poses.get(constraint.link_name)
+        if link is None:
+            raise GoalError(MoveItErrorCodes.INVALID_LINK_NAME,
+                            f"position constraint on '{constraint.link_name}', which the "
+                            "robot lacks")
+        offset = constraint.target_point_offset
+        point = (link @ np.array([offset.x, offset.y, offset.z, 1.0]))[:3]
+        if not _inside(point, constraint, scene, poses):
+            return f"'{constraint.link_name}' at {np.round(point, 4).tolist()} outside its region"
+    for constraint in constraints.orientation_constraints:
+        link = poses.get(constraint.link_name)
+        if link is None:
+            raise GoalError(MoveItErrorCodes.INVALID_LINK_NAME,
+                            f"orientation constraint on '{constraint.link_name}', which the "
+                            "robot lacks")
+        error = _orientation_error(link[:3, :3], constraint,
+                                   _frame(scene, constraint.header.frame_id, poses))
+        tolerance = np.array([constraint.absolute_x_axis_tolerance,
+                              constraint.absolute_y_axis_tolerance,
+                              constraint.absolute_z_axis_tolerance]) + 1e-9
+        if np.any(error > tolerance):
+            return f"'{constraint.link_name}' turned {np.round(error, 4).tolist()} rad from its target"
+    return None
+
+
+def joint_goal(scene: PlanningScene, group: str, start: Mapping[str, float],
+               constraints: Constraints) -> Dict[str, float]:
+    goal = dict(start)
+    variables = scene.model.group(group).variables
+    for joint in constraints.joint_constraints:
+        name = joint.joint_name
+        if name not in scene.model.bounds:
+            raise GoalError(MoveItErrorCodes.INVALID_GOAL_CONSTRAINTS,
+                            f"joint constraint on '{name}', which the robot lacks")
+        if not math.isfinite(joint.position):
+            raise GoalError(MoveItErrorCodes.INVALID_GOAL_CONSTRAINTS,
+                            f"joint constraint on '{name}': position {joint.position}")
+        bounds = scene.model.bounds[name]
+        low = max(joint.position - joint.tolerance_below, bounds.lower)
+        high = min(joint.position + joint.tolerance_above, bounds.upper)
+        if low > high + 1e-12:
+            raise GoalError(MoveItErrorCodes.INVALID_GOAL_CONSTRAINTS,
+                            f"joint '{name}' goal {joint.position:.4f} is outside its bounds "
+                            f"{bounds.lower:.4f} to {bounds.upper:.4f}")
+        goal[name] = min(max(joint.position, low), high)
+        if name not in variables:
+            raise GoalError(MoveItErrorCodes.INVALID_GOAL_CONSTRAINTS,
+                            f"joint '{name}' is not in group '{group}'")
+    return goal
+
+
+def pose_goals(scene: PlanningScene, group: str, start: Mapping[str, float],
+               constraints: Constraints, solver, deadline: float, rng: np.random.Generator
+               ) -> Goals:
+    """Goal states of a position (and orientation) constraint, sampled by IK."""
+    if solver is None:
+        raise GoalError(MoveItErrorCodes.NO_IK_SOLUTION,
+                        f"group '{group}' has no kinematics solver: a pose goal cannot be "
+                        "sampled (give robot_description_kinematics an entry for it)")
+    links = {c.link_name for c in constraints.position_constraints} | \
+        {c.link_name for c in constraints.orientation_constraints}
+    if len(links) != 1:
+        raise GoalError(MoveItErrorCodes.INVALID_GOAL_CONSTRAINTS,
+                        f"pose constraints on {sorted(links)}: one link per goal")
+    link = links.pop()
+    poses = scene.model.link_poses(start)
+    if link not in poses:
+        raise GoalError(MoveItErrorCodes.INVALID_LINK_NAME,
+                        f"a pose goal for '{link}', which the robot lacks")
+    offset = _fixed_offset(scene.model, solver.tip, link)
+    base = poses[solver.base]
+    position = constraints.position_constraints[0] if constraints.position_constraints else None
+    orientation = constraints.orientation_constraints[0] \
+        if constraints.orientation_constraints else None
+    center = _region_center(position, scene, poses) if position is not None else None
+    target_rotation = None
+    if orientation is not None:
+        frame = _frame(scene, orientation.header.frame_id, poses)
+        target_rotation = (frame @ pose_matrix(Pose(orientation=orientation.orientation),
+                                               "orientation"))[:3, :3]
+    goals = Goals()
+    seed = [start[j] for j in solver.joints]
+    for attempt in range(MAX_IK_TRIES):
+        if len(goals.states) >= GOAL_SAMPLES or (attempt > 0 and time.monotonic() > deadline):
+            break
+        target = np.eye(4)
+        target[:3, :3] = target_rotation if target_rotation is not None else \
+            random_rotation_matrix(rng.random(3))[:3, :3]
+        if center is not None:
+            target[:3, 3] = center
+        else:   # an orientation alone: a position the link can have
+            sample = {j: rng.uniform(*_range(scene.model.bounds[j])) for j in solver.joints}
+            target[:3, 3] = scene.model.link_poses(dict(start, **sample))[link][:3, 3]
+        tip_target = target @ np.linalg.inv(offset)
+        solution = solver.inverse(np.linalg.inv(base) @ tip_target, seed)
+        seed = [rng.uniform(*_range(scene.model.bounds[j])) for j in solver.joints]
+        if solution is None:
+            continue
+        goals.ik_solutions += 1
+        state = dict(start, **solver.state(solution))
+        if satisfied(scene, state, constraints) is not None:
+            continue
+        hit = scene.contacts(state, group)
+        if hit:
+            goals.collisions += hit
+            continue
+        goals.states.append(state)
+    return goals
+
+
+def _range(bounds) -> Tuple[float, float]:
+    return (bounds.lower, bounds.upper) if bounds.bounded else (-math.pi, math.pi)
+
+
+def _fixed_offset(model, tip: str, link: str) -> np.ndarray:
+    """The pose of ``link`` in the solver tip's frame, when fixed joints join them."""
+    if link == tip:
+        return np.eye(4)
+    poses = model.link_poses(model.default_positions())
+    for a, b in ((tip, link), (link, tip)):
+        try:
+            chain = model.urdf.chain(a, b)
+        except ValueError:
+            continue
+        if all(j.type == "fixed" for j in chain):
+            return np.linalg.inv(poses[tip]) @ poses[link]
+    raise GoalError(MoveItErrorCodes.INVALID_LINK_NAME,
+                    f"the group's IK solves for '{tip}'; '{link}' does not move rigidly with it")

@@ -1,0 +1,336 @@
+"""MoveIt's planning pipeline with OMPL (``ompl_interface/OMPLPlanner`` and the default
+request adapters), in Python on PyPI's OMPL: a MotionPlanRequest and a planning scene in,
+MoveIt's error code and a timed RobotTrajectory of the group out.
+
+In order, as the pipeline runs:
+- the group must exist (INVALID_GROUP_NAME) and there must be goal constraints
+  (INVALID_GOAL_CONSTRAINTS);
+- the start is the scene's state with the request's ``start_state`` over it;
+  FixStartStateBounds: a joint outside its bounds by no more than
+  ``start_state_max_bounds_error`` is moved onto them (farther: START_STATE_INVALID);
+  FixStartStateCollision: a start in collision is jiggled (``jiggle_fraction`` of each
+  joint's range, 100 tries) to a free state nearby, else START_STATE_IN_COLLISION;
+- each goal constraint set (alternatives) gives goal states (:mod:`goals`): a joint goal
+  outside the bounds is INVALID_GOAL_CONSTRAINTS, a pose goal no IK reaches
+  NO_IK_SOLUTION, goals whose every state collides GOAL_IN_COLLISION;
+- the straight joint-space line to the nearest goal when it is free, else the group's OMPL
+  planner (``ompl_planning.yaml``) within ``allowed_planning_time`` (TIMED_OUT when it
+  finds nothing), its path simplified and interpolated;
+- the whole path checked again four times more finely than motions were checked while
+  planning; where that finds a collision the planning resolution stepped over, the search
+  runs again at the finer resolution while time is left (else INVALID_MOTION_PLAN);
+- AddTimeParameterization: times within the joint limits and the request's scaling.
+Continuous joints are planned within [-pi, pi]. Collision checks use the group's moving
+links (:meth:`PlanningScene.contacts`); motions are checked every
+``longest_valid_segment_fraction`` of the space's extent, as MoveIt's OMPL interface does.
+"""
+from __future__ import annotations
+
+import logging
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Dict, List, Optional, Sequence
+
+import numpy as np
+from moveit_msgs.msg import MoveItErrorCodes as Codes
+from ompl import base as ob
+from ompl import geometric as og
+from ompl import util as ou
+
+from moveit_core.planning_scene import PlanningScene
+from moveit_core.robot_model import RobotModelError
+from moveit_core.time_parameterization import Timed, limits_of, time_path
+from moveit_planners_ompl.goals import GoalError, Goals, joint_goal, pose_goals
+from moveit_planners_ompl.planner_configs import PlannerConfigs
+
+# rospy shows the rosout.* loggers on the console and /rosout
+LOG = logging.getLogger("rosout.move_group")
+ou.setLogLevel(ou.LOG_WARN)
+
+DEFAULT_PLANNING_TIME = 1.0      # s, for a request that allows none (MoveIt's)
+JIGGLE_TRIES = 100               # FixStartStateCollision's max_sampling_attempts
+GOAL_SHARE = 0.5                 # of the planning time IK goal sampling may take
+MAX_SEED = 2 ** 32 - 1           # OMPL's seeds are unsigned 32-bit; 0 would be its own
+# the found path is checked again this many times more finely than motions were checked
+# while planning: a thin object a planning step jumped over is found there
+FINAL_CHECK_DIVISOR = 4
+
+
+@dataclass(frozen=True)
+class AdapterSettings:
+    """The request adapters' parameters (move_group's namespace; Setup-Assistant values)."""
+
+    start_state_max_bounds_error: float = 0.1
+    jiggle_fraction: float = 0.05
+
+
+@dataclass
+class PlanResult:
+    code: int
+    message: str
+    start: Dict[str, float] = field(default_factory=dict)
+    joints: List[str] = field(default_factory=list)
+    timed: Optional[Timed] = None
+    planning_time: float = 0.0
+
+    @property
+    def ok(self) -> bool:
+        return self.code == Codes.SUCCESS
+
+
+class OmplPlanner:
+    """Plans for every group of a scene's robot (``solvers(group)``: the group's IK solver
+    or None)."""
+
+    def __init__(self, configs: PlannerConfigs, solvers, adapters: AdapterSettings = AdapterSettings(),
+                 seed: int = 1):
+        self.configs, self.solvers, self.adapters = configs, solvers, adapters
+        self.seed = seed
+        self._plans = 0
+
+    def plan(self, scene: PlanningScene, request) -> PlanResult:
+        began = time.monotonic()
+        try:
+            result = self._plan(scene, request, began)
+        except GoalError as error:
+            result = PlanResult(error.code, str(error))
+        result.planning_time = time.monotonic() - began
+        if not result.ok:
+            LOG.warning("planning for group '%s' failed (%d): %s", request.group_name,
+                        result.code, result.message)
+        return result
+
+    # --- the pipeline --------------------------------------------------------------------
+
+    def _plan(self, scene: PlanningScene, request, began: float) -> PlanResult:
+        group_name = request.group_name
+        if not group_name:
+            return PlanResult(Codes.INVALID_GROUP_NAME, "the request names no group")
+        try:
+            group = scene.model.group(group_name)
+        except RobotModelError as error:
+            return PlanResult(Codes.INVALID_GROUP_NAME, str(error))
+        joints = list(group.variables)
+        goals_given = [c for c in request.goal_constraints
+                       if c.joint_constraints or c.position_constraints or
+                       c.orientation_constraints]
+        if not goals_given:
+            return PlanResult(Codes.INVALID_GOAL_CONSTRAINTS, "the request has no goal "
+                              "constraints")
+        allowed = request.allowed_planning_time if request.allowed_planning_time > 0 \
+            else DEFAULT_PLANNING_TIME
+        deadline = began + allowed
+        self._plans += 1
+        seed = (self.seed + self._plans) % MAX_SEED or 1
+        rng = np.random.default_rng(seed)
+        start = self._start(scene, request, joints)
+        if isinstance(start, PlanResult):
+            return start
+        prefix, start = start
+        goals = self._goals(scene, group_name, start, goals_given,
+                            began + allowed * GOAL_SHARE, rng)
+        if isinstance(goals, PlanResult):
+            goals.start = prefix
+            return goals
+        planning = self.configs.group(group_name, request.planner_id)
+        lows, highs = self._space_bounds(scene, joints)
+        goal_vectors = [np.clip([g[j] for j in joints], lows, highs) for g in goals]
+        start_vector = np.clip([start[j] for j in joints], lows, highs)
+        resolution = planning.longest_valid_segment_fraction * float(np.linalg.norm(highs - lows))
+
+        def valid(vector) -> bool:
+            return not scene.contacts(dict(start, **dict(zip(joints, vector))), group_name)
+
+        order = np.argsort([np.linalg.norm(g - start_vector) for g in goal_vectors])
+        path = None
+        for index in order:   # the straight line first: most requests need nothing else
+            if _motion_free(start_vector, goal_vectors[index], resolution, valid):
+                path = [start_vector, goal_vectors[index]]
+                break
+        fine = resolution / FINAL_CHECK_DIVISOR
+        if path is not None and not _path_free(path, fine, valid):
+            path = None        # free at the planning resolution, not between its states
+        while path is None:
+            path = self._search(joints, lows, highs, start_vector, goal_vectors, planning,
+                                resolution, valid, max(0.05, deadline - time.monotonic()), seed)
+            if isinstance(path, PlanResult):
+                path.start = prefix
+                return path
+            if not _path_free(path, fine, valid):
+                # a corner the planning resolution stepped over: search again checking
+                # motions as finely as the final check, while time is left
+                if time.monotonic() >= deadline or resolution <= fine:
+                    return PlanResult(Codes.INVALID_MOTION_PLAN, "the planned path collides "
+                                      "between the states the planner checked", prefix)
+                resolution, path = fine, None
+        dense = _interpolate(path, resolution)
+        positions = ([np.array([prefix[j] for j in joints])]
+                     if any(abs(prefix[j] - start[j]) > 1e-12 for j in joints) else []) + dense
+        velocity, acceleration = limits_of(scene.model, joints)
+        timed = time_path(positions, velocity, acceleration,
+                          request.max_velocity_scaling_factor,
+                          request.max_acceleration_scaling_factor)
+        return PlanResult(Codes.SUCCESS, f"planned: {len(path)} vertices, "
+                          f"{timed.times[-1]:.2f} s", prefix, joints, timed)
+
+    def _start(self, scene: PlanningScene, request, joints: Sequence[str]):
+        """(the start as given, the start planned from) or a failed PlanResult."""
+        given = dict(scene.positions)
+        state = request.start_state.joint_state
+        if len(state.name) != len(state.position):
+            return PlanResult(Codes.INVALID_ROBOT_STATE, f"start_state has {len(state.name)} "
+                              f"joint names and {len(state.position)} positions")
+        for name, value in zip(state.name, state.position):
+            if name in scene.model.bounds:
+                if not math.isfinite(value):
+                    return PlanResult(Codes.INVALID_ROBOT_STATE,
+                                      f"start_state: joint '{name}' at {value}")
+                given[name] = float(value)
+        start = dict(given)
+        for joint in joints:
+            bounds = scene.model.bounds[joint]
+            if not bounds.bounded:
+                start[joint] = math.remainder(start[joint], 2 * math.pi)
+                continue
+            if not bounds.contains(start[joint]):
+                if not bounds.contains(start[joint], self.adapters.start_state_max_bounds_error):
+                    return PlanResult(Codes.START_STATE_INVALID,
+                                      f"the start has {scene.model.within_bounds({joint: start[joint]})[0]}"
+                                      f", beyond start_state_max_bounds_error "
+                                      f"({self.adapters.start_state_max_bounds_error})", given)
+                start[joint] = bounds.clamp(start[joint])
+        hit = scene.contacts(start, request.group_name)
+        if hit:
+            freed = self._jiggle(scene, request.group_name, start, joints)
+            if freed is None:
+                return PlanResult(Codes.START_STATE_IN_COLLISION,
+                                  f"the start state collides: {hit[0][0]} touches {hit[0][1]}",
+                                  given)
+            start = freed
+        return given, start
+
+    def _jiggle(self, scene, group, start, joints):
+        rng = np.random.default_rng(len(joints))
+        for _ in range(JIGGLE_TRIES):
+            trial = dict(start)
+            for joint in joints:
+                lower, upper = self._bounds(scene, joint)
+                reach = (upper - lower) * self.adapters.jiggle_fraction
+                trial[joint] = float(np.clip(trial[joint] + rng.uniform(-reach, reach), lower,
+                                             upper))
+            if not scene.contacts(trial, group):
+                return trial
+        return None
+
+    def _goals(self, scene, group, start, sets, deadline, rng):
+        states, found = [], Goals()
+        for constraints in sets:
+            if constraints.joint_constraints and not (constraints.position_constraints or
+                                                      constraints.orientation_constraints):
+                goal = joint_goal(scene, group, start, constraints)
+                hit = scene.contacts(goal, group)
+                if hit:
+                    found.collisions += hit
+                else:
+                    states.append(goal)
+                continue
+            sampled = pose_goals(scene, group, start, constraints,
+                                 self._solver(group), deadline, rng)
+            found.ik_solutions += sampled.ik_solutions
+            found.collisions += sampled.collisions
+            states += sampled.states
+        if states:
+            return states
+        if found.collisions:
+            a, b = found.collisions[0]
+            return PlanResult(Codes.GOAL_IN_COLLISION, f"every goal state collides ({a} "
+                              f"touches {b})")
+        return PlanResult(Codes.NO_IK_SOLUTION, "no IK solution reaches the goal within the "
+                          "joint bounds" + ("" if not found.ik_solutions else
+                                            " and its constraints"))
+
+    def _solver(self, group):
+        try:
+            return self.solvers(group)
+        except RobotModelError:
+            return None
+
+    @staticmethod
+    def _bounds(scene, joint):
+        bounds = scene.model.bounds[joint]
+        return (bounds.lower, bounds.upper) if bounds.bounded else (-math.pi, math.pi)
+
+    def _space_bounds(self, scene, joints):
+        ranges = [self._bounds(scene, j) for j in joints]
+        return np.array([r[0] for r in ranges]), np.array([r[1] for r in ranges])
+
+    def _search(self, joints, lows, highs, start, goals, planning, resolution, valid,
+                seconds, seed):
+        ou.setLogLevel(ou.LOG_NONE)
+        ou.RNG.setSeed(seed)
+        ou.setLogLevel(ou.LOG_WARN)
+        count = len(joints)
+        space = ob.RealVectorStateSpace(count)
+        bounds = ob.RealVectorBounds(count)
+        for i in range(count):
+            bounds.setLow(i, float(lows[i]))
+            bounds.setHigh(i, float(highs[i]))
+        space.setBounds(bounds)
+        # OMPL checks motions every fraction of the space's extent (its diagonal here)
+        space.setLongestValidSegmentFraction(resolution / float(np.linalg.norm(highs - lows)))
+        setup = og.SimpleSetup(space)
+        information = setup.getSpaceInformation()
+        setup.setStateValidityChecker(lambda s: valid([s[i] for i in range(count)]))
+        start_state = space.allocState()
+        for i in range(count):
+            start_state[i] = float(start[i])
+        setup.addStartState(start_state)
+        goal_states = ob.GoalStates(information)
+        for goal in goals:
+            state = space.allocState()
+            for i in range(count):
+                state[i] = float(goal[i])
+            goal_states.addState(state)
+        setup.setGoal(goal_states)
+        setup.setPlanner(self.configs.make(planning, information))
+        setup.solve(seconds)
+        if not setup.haveExactSolutionPath():
+            return PlanResult(Codes.TIMED_OUT, f"{planning.planner} found no path within "
+                              f"{seconds:.2f} s")
+        setup.simplifySolution(max(0.01, seconds / 4))
+        solution = setup.getSolutionPath()
+        return [np.array([solution.getState(k)[i] for i in range(count)])
+                for k in range(solution.getStateCount())]
+
+
+def _interpolate(path: Sequence[np.ndarray], resolution: float) -> List[np.ndarray]:
+    """The path's states no farther apart than ``resolution`` (Euclidean, joint space)."""
+    dense = [np.asarray(path[0], dtype=float)]
+    for a, b in zip(path, path[1:]):
+        steps = max(1, int(math.ceil(np.linalg.norm(b - a) / resolution)))
+        for k in range(1, steps + 1):
+            dense.append(a + (b - a) * (k / steps))
+    return dense
+
+
+def _path_free(path, resolution, valid) -> bool:
+    return all(_motion_free(a, b, resolution, valid) for a, b in zip(path, path[1:]))
+
+
+def _motion_free(a, b, resolution, valid) -> bool:
+    """Every state of the straight motion from a to b, ``resolution`` apart, is valid
+    (checked from the ends inwards by halving, as OMPL's discrete motion validator does)."""
+    steps = max(1, int(math.ceil(np.linalg.norm(b - a) / resolution)))
+    if not valid(b):
+        return False
+    pending = [(0, steps)]
+    while pending:
+        low, high = pending.pop(0)
+        if high - low < 2:
+            continue
+        middle = (low + high) // 2
+        if not valid(a + (b - a) * (middle / steps)):
+            return False
+        pending += [(low, middle), (middle, high)]
+    return True
