@@ -148,6 +148,21 @@ class PlanningScene:
         self.attached: Dict[str, AttachedObject] = {}
         self._moved_by: Dict[Optional[str], Set[str]] = {}
 
+    def copy(self) -> "PlanningScene":
+        """An independent scene (a planning request's, or another thread's): the same
+        shapes, collision objects of its own (FCL objects are moved for every check)."""
+        other = copy.copy(self)
+        other.positions = dict(self.positions)
+        other.links = {name: Body(name, body.shapes) for name, body in self.links.items()}
+        other.objects = {name: SceneObject(o.message, o.pose, Body(name, o.body.shapes))
+                         for name, o in self.objects.items()}
+        other.attached = {name: AttachedObject(a.message, a.link, a.offset, set(a.touch_links),
+                                               Body(name, a.body.shapes))
+                          for name, a in self.attached.items()}
+        other.acm = self.acm.copy()
+        other._moved_by = dict(self._moved_by)
+        return other
+
     # --- frames ------------------------------------------------------------------------
 
     def frame_pose(self, frame: str, poses: Optional[Mapping[str, np.ndarray]] = None
@@ -253,10 +268,7 @@ class PlanningScene:
     def apply(self, scene: PlanningSceneMsg) -> None:
         """A PlanningScene message: a diff (``is_diff``) applied, or the whole scene replaced
         (world objects and attached objects; the robot state's joints set). All or nothing."""
-        trial = copy.copy(self)
-        trial.objects, trial.attached = dict(self.objects), dict(self.attached)
-        trial.acm = self.acm.copy()
-        trial.positions = dict(self.positions)
+        trial = self.copy()
         if not scene.is_diff:
             trial.objects.clear()
             trial.attached.clear()

@@ -1,0 +1,1 @@
+"""MoveIt's fake controller manager (see manager)."""

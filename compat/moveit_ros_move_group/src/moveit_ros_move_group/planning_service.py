@@ -1,0 +1,123 @@
+"""move_group's planning capabilities (MoveIt's MoveGroupMoveAction, MoveGroupPlanService,
+MoveGroupQueryPlannersService, MoveGroupExecuteTrajectoryAction): requests turned into
+plans of the OMPL pipeline on a snapshot of the monitored scene, and plans executed by the
+trajectory execution manager. Functions of the request, so tested without a master."""
+from __future__ import annotations
+
+from typing import Optional, Tuple
+
+from moveit_msgs.msg import (MotionPlanResponse, MoveGroupResult, MoveItErrorCodes as Codes,
+                             PlannerInterfaceDescription, RobotTrajectory)
+from moveit_msgs.srv import GetMotionPlanResponse, QueryPlannerInterfacesResponse
+
+from moveit_core.time_parameterization import joint_trajectory
+from moveit_planners_ompl.planner import PlanResult
+from moveit_ros_move_group.conversions import robot_state
+
+PIPELINE = "ompl"
+PLANNING_PLUGIN = "ompl_interface/OMPLPlanner"
+
+
+class Planning:
+    """What the planning capabilities share: the context (model, current state), the scene
+    monitor, the planner and, when execution is allowed, the execution manager."""
+
+    def __init__(self, context, monitor, planner, executor=None):
+        self.context, self.monitor, self.planner, self.executor = \
+            context, monitor, planner, executor
+
+    def _scene_for(self, request, diff=None):
+        scene = self.monitor.snapshot()
+        if diff is not None and (diff.world.collision_objects or
+                                 diff.robot_state.attached_collision_objects or
+                                 diff.robot_state.joint_state.name):
+            scene.apply(diff)
+        return scene
+
+    def plan(self, request, diff=None) -> PlanResult:
+        return self.planner.plan(self._scene_for(request, diff), request)
+
+    def _trajectory(self, result: PlanResult) -> RobotTrajectory:
+        trajectory = RobotTrajectory()
+        if result.ok:
+            trajectory.joint_trajectory = joint_trajectory(result.timed, result.joints)
+            trajectory.joint_trajectory.header.frame_id = self.context.model.model_frame
+        return trajectory
+
+    def _start_state(self, result: PlanResult):
+        model = self.context.model
+        start = model.complete(dict(self.monitor.snapshot().positions, **result.start))
+        return robot_state(start, [j for j in model.joint_order if j in model.bounds])
+
+    # --- plan_kinematic_path -----------------------------------------------------------
+
+    def plan_service(self, request) -> GetMotionPlanResponse:
+        result = self.plan(request.motion_plan_request)
+        response = GetMotionPlanResponse()
+        response.motion_plan_response = MotionPlanResponse(
+            trajectory_start=self._start_state(result),
+            group_name=request.motion_plan_request.group_name,
+            trajectory=self._trajectory(result), planning_time=result.planning_time)
+        response.motion_plan_response.error_code.val = result.code
+        return response
+
+    # --- the move_group action ---------------------------------------------------------
+
+    def move(self, goal, feedback=None) -> Tuple[MoveGroupResult, str]:
+        """A MoveGroup goal planned (and executed unless plan only); the result and its
+        text (MoveIt's)."""
+        request, options = goal.request, goal.planning_options
+        execute = not options.plan_only
+        if execute and self.executor is None:
+            execute = False
+        if execute and (request.start_state.joint_state.name or
+                        request.start_state.attached_collision_objects):
+            # MoveIt plans a motion it executes from where the robot is
+            request.start_state.joint_state.name = []
+            request.start_state.joint_state.position = []
+        if feedback:
+            feedback("PLANNING")
+        result = self.plan(request, options.planning_scene_diff)
+        answer = MoveGroupResult(trajectory_start=self._start_state(result),
+                                 planned_trajectory=self._trajectory(result),
+                                 planning_time=result.planning_time if not execute else 0.0)
+        answer.error_code.val = result.code
+        if not result.ok:
+            return answer, ("No motion plan found. No execution attempted."
+                            if result.code in (Codes.PLANNING_FAILED, Codes.TIMED_OUT,
+                                               Codes.INVALID_MOTION_PLAN) else result.message)
+        if not execute:
+            return answer, "Motion plan was computed succesfully."
+        if feedback:
+            feedback("MONITOR")
+        code, message = self.executor.execute(answer.planned_trajectory.joint_trajectory)
+        answer.error_code.val = code
+        return answer, "Solution was found and executed." if code == Codes.SUCCESS else message
+
+    # --- execute_trajectory ------------------------------------------------------------
+
+    def execute_trajectory(self, goal) -> Tuple[int, str]:
+        if self.executor is None:
+            return Codes.CONTROL_FAILED, ("trajectory execution is off "
+                                          "(allow_trajectory_execution false, or no "
+                                          "moveit_controller_manager)")
+        return self.executor.execute(goal.trajectory.joint_trajectory)
+
+    # --- query_planner_interface -------------------------------------------------------
+
+    def query_planners(self, _request) -> QueryPlannerInterfacesResponse:
+        configs = self.planner.configs
+        ids = configs.planner_ids()
+        for group in self.context.model.groups:
+            ids += [f"{group}[{name}]" for name in configs.group(group).planner_ids]
+        return QueryPlannerInterfacesResponse(planner_interfaces=[PlannerInterfaceDescription(
+            name=PLANNING_PLUGIN, pipeline_id=PIPELINE, planner_ids=ids)])
+
+
+def action_text_status(code: int) -> str:
+    """The action's end state for a MoveIt code (as MoveIt's action servers end them)."""
+    if code == Codes.SUCCESS:
+        return "succeeded"
+    if code == Codes.PREEMPTED:
+        return "preempted"
+    return "aborted"

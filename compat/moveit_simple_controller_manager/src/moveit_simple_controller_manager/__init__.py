@@ -1,0 +1,1 @@
+"""MoveIt's simple controller manager (see manager)."""
