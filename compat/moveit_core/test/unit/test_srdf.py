@@ -31,7 +31,7 @@ def test_px100_groups_states_end_effector_and_disabled_pairs():
         "interbotix_gripper", "px100/ee_gripper_link", "interbotix_gripper", "")
     assert [(d.link1, d.link2, d.reason) for d in srdf.disabled_collisions][0] == (
         "px100/base_link", "px100/shoulder_link", "Adjacent")
-    assert len(srdf.disabled_collisions) == 8
+    assert len(srdf.disabled_collisions) == 9
 
 
 def test_chains_subgroups_and_the_virtual_joint():
@@ -63,7 +63,7 @@ def test_what_names_nothing_is_left_out_with_a_warning_and_the_rest_is_read():
     # the rest stands
     assert srdf.groups["interbotix_arm"].links == ()
     assert "wrist_angle" not in srdf.group_state("interbotix_arm", "Sleep").values
-    assert len(srdf.disabled_collisions) == 8
+    assert len(srdf.disabled_collisions) == 9
 
 
 @pytest.mark.parametrize("text, cause", [

@@ -1,0 +1,109 @@
+"""What the commanders of one process share, as MoveIt's C++ core shares them: the robot
+model of each ``robot_description`` (read once from the parameter server) and the current
+state from ``joint_states`` (MoveIt's CurrentStateMonitor)."""
+from __future__ import annotations
+
+import threading
+import time
+from typing import Dict, Optional, Tuple
+
+import rospy
+from sensor_msgs.msg import JointState
+
+from moveit_commander.exception import MoveItCommanderException
+from moveit_commander.roscpp_initializer import ensure_node
+from moveit_core import robot_model
+from moveit_core.robot_model import RobotModel
+
+STATE_WAIT = 1.0        # s: the longest a state getter waits for a complete state
+
+_LOCK = threading.Lock()
+_MODELS: Dict[Tuple[str, str], "Robot"] = {}
+
+
+def _name(ns: str, name: str) -> str:
+    return rospy.names.ns_join(ns, name) if ns else name
+
+
+class Robot:
+    """A robot description's model, kinematics settings and current state."""
+
+    def __init__(self, description: str, ns: str):
+        ensure_node()
+        try:
+            urdf = rospy.get_param(_name(ns, description))
+            srdf = rospy.get_param(_name(ns, description + "_semantic"))
+        except KeyError as error:
+            raise RuntimeError(f"Robot model parameter not found! Did you remap '{description}'? "
+                               f"(the parameter {error} is not set: start the config "
+                               "package's launch file first)") from None
+        self.kinematics = rospy.get_param(_name(ns, description + "_kinematics"), {}) or {}
+        self.planning = rospy.get_param(_name(ns, description + "_planning"), {}) or {}
+        try:
+            self.model: RobotModel = robot_model.load(
+                str(urdf), str(srdf), self.planning.get("joint_limits", {}))
+        except ValueError as error:
+            raise RuntimeError(f"the robot model cannot be built: {error}") from error
+        self.ns = ns
+        self._positions: Dict[str, float] = {}
+        self._stamps: Dict[str, float] = {}
+        self._lock = threading.Lock()
+        rospy.Subscriber(_name(ns, "joint_states"), JointState, self._update, queue_size=25)
+
+    def _update(self, message: JointState) -> None:
+        if len(message.name) != len(message.position):
+            return
+        stamp = message.header.stamp.to_sec()
+        with self._lock:
+            for name, value in zip(message.name, message.position):
+                self._positions[name] = float(value)
+                self._stamps[name] = stamp
+
+    def positions(self, wait: float = STATE_WAIT) -> Dict[str, float]:
+        """Every variable's current position: waits up to ``wait`` s for all to be heard;
+        those never heard are at their defaults, with a warning (as MoveIt's)."""
+        wanted = set(self.model.variables)
+        deadline = time.monotonic() + wait
+        while True:
+            with self._lock:
+                missing = wanted - set(self._positions)
+                known = dict(self._positions)
+            if not missing or time.monotonic() > deadline or rospy.is_shutdown():
+                break
+            time.sleep(0.01)
+        if missing:
+            rospy.logwarn_throttle(5.0, "moveit_commander: no joint state heard for %s on %s "
+                                   "within %.1f s", sorted(missing),
+                                   rospy.resolve_name(_name(self.ns, "joint_states")), wait)
+        return self.model.complete(known)
+
+
+def robot(description: str = "robot_description", ns: str = "") -> Robot:
+    key = (description, ns)
+    with _LOCK:
+        if key not in _MODELS:
+            _MODELS[key] = Robot(description, ns)
+        return _MODELS[key]
+
+
+def group_or_raise(shared: Robot, name: str):
+    try:
+        return shared.model.group(name)
+    except ValueError:
+        raise RuntimeError(f"Group '{name}' was not found.") from None
+
+
+def solver(shared: Robot, group: str):
+    """The group's local IK solver (from robot_description_kinematics), or None."""
+    from moveit_kinematics.kdl_solver import KdlSolver, SolverSettings
+    entry = shared.kinematics.get(group)
+    if not entry:
+        return None
+    try:
+        return KdlSolver(shared.model, group, SolverSettings.from_parameters(entry))
+    except (ValueError, TypeError):
+        return None
+
+
+def error(message: str) -> MoveItCommanderException:
+    return MoveItCommanderException(message)
