@@ -550,7 +550,10 @@ def _include(element: ET.Element, source: str, warnings: _Warnings,
 def _parse(path: str) -> ET.Element:
     try:
         _check_size(os.path.getsize(path), path)  # before reading a file of any size
-        return ET.parse(path).getroot()
+        with open(path, "rb") as stream:
+            # Gazebo reads a file whose <?xml ...?> declaration follows blank lines
+            # (Interbotix's xsarm_gazebo.world starts with one); expat does not
+            return ET.fromstring(stream.read().lstrip())
     except ET.ParseError as error:
         raise SdfError(f"{path}: not well-formed XML: {error}") from None
     except OSError as error:

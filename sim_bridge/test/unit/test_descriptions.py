@@ -110,3 +110,11 @@ def test_a_model_with_a_joint_sim_bridge_does_not_build_is_left_out_naming_it(tm
     model = ball.split("</model>", 1)[1].rsplit("</world>", 1)[0]
     with pytest.raises(SdfError, match="joint 'axle' is of type 'ball'"):
         parse_model(f"<sdf version='1.6'>{model}</sdf>", "spawn request")
+
+
+def test_a_world_whose_xml_declaration_follows_a_blank_line_loads(tmp_path):
+    # Interbotix's xsarm_gazebo.world starts with an empty line; Gazebo reads it
+    path = tmp_path / "xsarm.world"
+    assert JOINTED_WORLD.startswith("<?xml")
+    path.write_text("\n" + JOINTED_WORLD)
+    assert [m.name for m in load_world(str(path), [].append).models] == ["crate", "r2"]

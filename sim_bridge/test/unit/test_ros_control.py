@@ -226,7 +226,7 @@ def test_manager_refuses_what_it_cannot_do_and_lists_the_rest():
 
 
 def test_diff_drive_controller_drives_and_integrates_its_encoders():
-    params = {"/base_controller": {
+    params = {"/bot/base_controller": {
         "type": "diff_drive_controller/DiffDriveController", "left_wheel": "left_wheel_joint",
         "right_wheel": ["right_wheel_joint"], "base_frame_id": "base_footprint",
         "pose_covariance_diagonal": [0.001, 0.001, 1e6, 1e6, 1e6, 0.03],
@@ -237,7 +237,7 @@ def test_diff_drive_controller_drives_and_integrates_its_encoders():
     world.add_sdf_model(ModelSpec("ground", True, links=[
         LinkSpec("link", collisions=[ShapeSpec("plane")])]))
     world.spawn_urdf("bot", expand(f"{DATA}/diff_bot.urdf.xacro", {"drive": "ros_control"}))
-    manager = "/controller_manager"
+    manager = "/bot/controller_manager"   # no robotNamespace: the model's name
     assert bus.services[f"{manager}/load_controller"](LoadControllerRequest("base_controller")).ok
     assert bus.services[f"{manager}/switch_controller"](
         SwitchControllerRequest(start_controllers=["base_controller"], strictness=2)).ok
@@ -245,19 +245,33 @@ def test_diff_drive_controller_drives_and_integrates_its_encoders():
     from geometry_msgs.msg import Twist
     command = Twist()
     command.linear.x = 0.2
-    bus.subscriptions["/base_controller/cmd_vel"](command)
+    bus.subscriptions["/bot/base_controller/cmd_vel"](command)
     start, _ = world.pose("bot")
     run(world, 0.4)  # within cmd_vel_timeout (0.5 s): keeps going
-    bus.subscriptions["/base_controller/cmd_vel"](command)
+    bus.subscriptions["/bot/base_controller/cmd_vel"](command)
     run(world, 0.4)
-    bus.subscriptions["/base_controller/cmd_vel"](command)
+    bus.subscriptions["/bot/base_controller/cmd_vel"](command)
     run(world, 1.2)  # the command lapses after 0.5 s: it stops
     end, _ = world.pose("bot")
     travelled = end[0] - start[0]
     # the last command at 0.8 s lapses at 1.3 s: 1.3 s at 0.2 m/s
     assert travelled == pytest.approx(0.26, abs=0.01)
-    odometry = bus.last("/base_controller/odom")
+    odometry = bus.last("/bot/base_controller/odom")
     assert odometry.child_frame_id == "base_footprint"
     assert odometry.pose.pose.position.x == pytest.approx(travelled, abs=0.01)
     assert odometry.pose.covariance[35] == 0.03
     world.close()
+
+
+def test_without_a_robot_namespace_the_controllers_live_under_the_models_name():
+    """gazebo_ros_control's default (Interbotix's arms name none): /<model>/controller_manager."""
+    with open(f"{DATA}/arm_bot_controllers.yaml", encoding="utf-8") as stream:
+        configuration = yaml.safe_load(stream)
+    bus = RecordingBus({f"/px_arm/{name}": value for name, value in configuration.items()})
+    world = World(bus, ray_threads=1)
+    description = expand(f"{DATA}/arm_bot.urdf.xacro", {"arm_interface": "PositionJointInterface"})
+    assert "<robotNamespace>/arm_bot</robotNamespace>" in description
+    world.spawn_urdf("px_arm", description.replace("<robotNamespace>/arm_bot</robotNamespace>", ""))
+    assert "/px_arm/controller_manager/load_controller" in bus.services
+    assert bus.services["/px_arm/controller_manager/load_controller"](
+        LoadControllerRequest("arm_controller")).ok, bus.warnings
