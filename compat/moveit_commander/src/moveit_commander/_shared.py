@@ -30,15 +30,19 @@ class Robot:
 
     def __init__(self, description: str, ns: str):
         ensure_node()
+        # as MoveIt's RDFLoader: the description searched for from the node up, apart from
+        # ``ns`` (Interbotix's movers pass robot_description="px100/robot_description" and
+        # ns="px100"); the interfaces and joint_states are in ``ns``
+        description = rospy.search_param(description) or description
         try:
-            urdf = rospy.get_param(_name(ns, description))
-            srdf = rospy.get_param(_name(ns, description + "_semantic"))
+            urdf = rospy.get_param(description)
+            srdf = rospy.get_param(description + "_semantic")
         except KeyError as error:
             raise RuntimeError(f"Robot model parameter not found! Did you remap '{description}'? "
                                f"(the parameter {error} is not set: start the config "
                                "package's launch file first)") from None
-        self.kinematics = rospy.get_param(_name(ns, description + "_kinematics"), {}) or {}
-        self.planning = rospy.get_param(_name(ns, description + "_planning"), {}) or {}
+        self.kinematics = rospy.get_param(description + "_kinematics", {}) or {}
+        self.planning = rospy.get_param(description + "_planning", {}) or {}
         try:
             self.model: RobotModel = robot_model.load(
                 str(urdf), str(srdf), self.planning.get("joint_limits", {}))

@@ -177,7 +177,7 @@ class RobotModel:
             known = [s.name for s in self.srdf.group_states if s.group == group]
             raise RobotModelError(f"group '{group}' has no state '{name}' (it has: "
                                   f"{', '.join(known) or 'none'})")
-        return {j: v[0] for j, v in state.values.items() if j in self.bounds}
+        return {j: v[0] for j, v in state.values.items() if j in self.variables}
 
     def default_positions(self) -> Dict[str, float]:
         return {j: self.bounds[j].default() for j in self.variables}

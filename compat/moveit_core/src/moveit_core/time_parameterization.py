@@ -3,14 +3,17 @@
 joint's speed within its limit times the velocity scaling factor, every acceleration within
 its limit times the acceleration scaling factor, at rest at both ends.
 
-The steps are IPTP's: each segment first gets the time its slowest joint needs at full
-speed; then, pass after pass, a waypoint whose acceleration (from the parabola through it
-and its neighbours) exceeds a limit has its two segments stretched, until none does.
+Each segment first gets the time of the fastest motion along the path its limits allow
+(accelerating from rest and braking to rest at the limits, corners taken slowly enough for
+their change of direction); then, as IPTP does, pass after pass, a waypoint whose
+acceleration (from the parabola through it and its neighbours) exceeds a limit has its two
+segments stretched, until none does.
 Velocities and accelerations of the waypoints are the finite differences. A joint without
 a speed or acceleration limit gets MoveIt's 1 rad/s and 1 rad/s^2. No ROS here.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import List, Optional, Sequence
 
@@ -55,9 +58,7 @@ def time_path(positions: Sequence[Sequence[float]], max_velocity: Sequence[Optio
         zeros = np.zeros_like(q)
         return Timed(np.zeros(1), q, zeros, zeros.copy())
     delta = np.diff(q, axis=0)
-    # each segment at least as long as its slowest joint needs at full speed
-    dt = np.max(np.abs(delta) / velocity, axis=1)
-    dt = np.maximum(dt, 1e-6)
+    dt = _ramped(delta, velocity, acceleration)
     for _ in range(MAX_PASSES):
         stretched = False
         for i in range(count):
@@ -87,6 +88,38 @@ def time_path(positions: Sequence[Sequence[float]], max_velocity: Sequence[Optio
     accelerations[0] = delta[0] / dt[0] * 2.0 / dt[0]
     accelerations[-1] = -delta[-1] / dt[-1] * 2.0 / dt[-1]
     return Timed(times, q, velocities, accelerations)
+
+
+def _ramped(delta: np.ndarray, velocity: np.ndarray, acceleration: np.ndarray) -> np.ndarray:
+    """Segment durations of the path at the most speed its limits allow, accelerating and
+    braking at the limits along the path (forward and backward passes over the speed
+    along the path, a corner taken as slowly as its joints' change of direction needs):
+    the start the passes below refine, so that a long path ramps up and down instead of
+    crawling at the speed its first segment may reach from rest."""
+    lengths = np.linalg.norm(delta, axis=1)
+    moving = lengths > 1e-12
+    unit = np.zeros_like(delta)
+    unit[moving] = delta[moving] / lengths[moving, None]
+    with np.errstate(divide="ignore"):
+        top = np.min(np.where(np.abs(unit) > 1e-12, velocity / np.abs(unit), np.inf), axis=1)
+        push = np.min(np.where(np.abs(unit) > 1e-12, acceleration / np.abs(unit), np.inf),
+                      axis=1)
+    count = len(delta) + 1
+    speed = np.full(count, np.inf)
+    speed[0] = speed[-1] = 0.0
+    for i in range(1, count - 1):
+        turn = np.abs(unit[i] - unit[i - 1])
+        reach = min(lengths[i - 1], lengths[i])
+        with np.errstate(divide="ignore"):
+            corner = np.min(np.where(turn > 1e-12, np.sqrt(acceleration * reach / turn), np.inf))
+        speed[i] = min(top[i - 1], top[i], corner)
+    for i in range(len(delta)):            # accelerating forward
+        speed[i + 1] = min(speed[i + 1], math.sqrt(speed[i] ** 2 + 2 * push[i] * lengths[i]))
+    for i in reversed(range(len(delta))):  # braking backward
+        speed[i] = min(speed[i], math.sqrt(speed[i + 1] ** 2 + 2 * push[i] * lengths[i]))
+    dt = np.where(moving, 2 * lengths / np.maximum(speed[:-1] + speed[1:], 1e-12), 0.0)
+    # and never faster than the slowest joint's full speed over the segment
+    return np.maximum(np.maximum(dt, np.max(np.abs(delta) / velocity, axis=1)), 1e-6)
 
 
 def limits_of(model, joints: Sequence[str]):
