@@ -4,6 +4,8 @@ import os
 import subprocess
 
 import pytest
+import roslaunch.config
+import roslaunch.depends
 import roslaunch.rlutil
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -25,8 +27,32 @@ LAUNCH_FILES = [p for p in workspace_files("*.launch") + workspace_files("*.test
                 if ("/test/" not in p or p.endswith(".test"))
                 and not p.startswith(("tools/", "test/"))]
 URDF_FILES = workspace_files("*.urdf")
-# robot xacros (macro files live under inc/ and are not robots by themselves)
-XACRO_ROBOTS = [p for p in workspace_files("*.xacro") if f"{os.sep}inc{os.sep}" not in p]
+
+
+def _refuses(path):
+    """A xacro that stops with xacro.fatal by design (Interbotix's models other than the
+    px100 name the one provided: see test_other_interbotix_models_are_refused_by_name)."""
+    with open(os.path.join(REPO, path), encoding="utf-8") as stream:
+        return "xacro.fatal(" in stream.read()
+
+
+# robot xacros (macro files live under inc/ and are not robots by themselves; an SRDF is
+# semantics, not a robot)
+XACRO_ROBOTS = [p for p in workspace_files("*.xacro")
+                if f"{os.sep}inc{os.sep}" not in p and not p.endswith(".srdf.xacro")
+                and not _refuses(p)]
+REFUSING_XACROS = [p for p in workspace_files("*.xacro") if _refuses(p)]
+# launch files that, as Interbotix's own, need the robot's arguments (robot_model's
+# default is empty there too)
+PX100 = ["robot_model:=px100", "dof:=4"]
+LAUNCH_ARGUMENTS = {
+    "compat/interbotix_xsarm_descriptions/launch/xsarm_description.launch": PX100,
+    "compat/interbotix_xsarm_gazebo/launch/xsarm_gazebo.launch": PX100,
+    "compat/interbotix_xsarm_moveit/launch/xsarm_moveit.launch": PX100,
+    "compat/interbotix_xsarm_moveit/launch/move_group.launch": PX100 + ["robot_name:=px100"],
+    "compat/interbotix_xsarm_moveit/launch/planning_context.launch": PX100 + ["robot_name:=px100"],
+    "compat/interbotix_xsarm_ros_control/launch/xsarm_ros_control.launch": PX100,
+}
 
 
 def run(command):
@@ -48,8 +74,29 @@ def test_catkin_lint_finds_no_warnings(package):
 @pytest.mark.parametrize("launch_file", LAUNCH_FILES)
 def test_roslaunch_check_passes(launch_file):
     # what roslaunch-check runs, in this process (the script costs a second a file to start)
-    error = roslaunch.rlutil.check_roslaunch(os.path.join(REPO, launch_file))
-    assert not error, error
+    path = os.path.join(REPO, launch_file)
+    if launch_file not in LAUNCH_ARGUMENTS:
+        error = roslaunch.rlutil.check_roslaunch(path)
+        assert not error, error
+        return
+    # with the arguments a user gives: the file loads and its packages are declared
+    roslaunch.config.load_config_default([(path, LAUNCH_ARGUMENTS[launch_file])],
+                                         roslaunch.rlutil.DEFAULT_MASTER_PORT, verbose=False)
+    _, _, missing = roslaunch.depends.roslaunch_deps([path])
+    assert not any(missing.values()), missing
+
+
+def test_every_launch_file_given_arguments_exists():
+    assert set(LAUNCH_ARGUMENTS) <= set(LAUNCH_FILES)
+
+
+@pytest.mark.parametrize("xacro_file", REFUSING_XACROS)
+def test_other_interbotix_models_are_refused_by_name(xacro_file):
+    expanded = run(["xacro", xacro_file])
+    model = os.path.basename(xacro_file).split(".")[0]
+    assert expanded.returncode != 0
+    assert f"robot_model:={model}: this workspace's interbotix_xsarm_descriptions describes " \
+        "the px100 only (robot_model:=px100)" in expanded.stderr, expanded.stderr
 
 
 @pytest.mark.parametrize("urdf", [p for p in URDF_FILES if "/e2e/data/" not in p])
