@@ -37,6 +37,10 @@ The scene (tools/bench/): a closed hall with 40 static objects and an RB1-class 
   planning time                 arm_move's planner on 200 random reachable, collision-free
                                 targets in the table scene, each from where the last
                                 ended (the unit test's targets): median and 95th percentile
+  MoveIt                        tools/bench/moveit_cost.py: move_group (xsarm_moveit.launch,
+                                fake controllers) up after roslaunch; plan_kinematic_path
+                                for 200 random reachable pose targets in the table scene
+                                (median, 95th percentile, share planned); KDL IK per call
 
 The master is started first so that its start-up is not counted. Results also go to
 bench_results/bench.txt.
@@ -57,6 +61,7 @@ BENCH = os.path.join(REPO, "tools", "bench")
 OUTPUT = os.path.join(REPO, "bench_results")
 sys.path.insert(0, BENCH)
 import laser_cost  # noqa: E402  (tools/bench/ is not a package)
+import moveit_cost  # noqa: E402
 
 WINDOW = 10.0  # wall seconds each rate is measured over
 STEP_240 = 1.0 / 240.0  # the step of the second world (pybullet's default)
@@ -82,6 +87,11 @@ TARGETS = {
     "soak: RSS growth (MB)": ("<", 5.0),
     "soak: failed calls": ("<=", 0.0),
     "arm planning, median (ms)": ("<=", 50.0),
+    "move_group up after roslaunch (s)": ("<=", 3.0),
+    "move_group planning, median (ms)": ("<=", 20.0),
+    "move_group planning, 95th percentile (ms)": ("<=", 100.0),
+    "move_group planning, targets planned (%)": (">=", 99.0),
+    "KDL IK, median (ms)": ("<=", 2.0),
     # a user at real time must not notice the cameras: the simulator keeps real time, and
     # a 15 Hz 320x240 camera takes at most a third of a core (15 images of 20 ms)
     "cameras watched at real time: real-time factor": (">=", 0.99),
@@ -500,6 +510,8 @@ def main() -> int:
             for robots in ROBOT_COUNTS:
                 print(f"bench: {robots} robots...", flush=True)
                 crowd[robots] = measure_ros(env, probe, f"robots_{robots}", robots=robots)
+            print("bench: move_group (MoveIt)...", flush=True)
+            moveit = moveit_cost.measure(env, os.path.join(OUTPUT, "bench_moveit.log"))
             soak = None
             if SOAK_MINUTES > 0:
                 print(f"bench: soak, {SOAK_MINUTES:g} minutes at real time...", flush=True)
@@ -551,6 +563,11 @@ def main() -> int:
         ("arm planning, median (ms)", planning["median"], "{:.1f}"),
         ("arm planning, 95th percentile (ms)", planning["p95"], "{:.1f}"),
         ("arm planning, targets reached (%)", planning["success"], "{:.1f}"),
+        ("move_group up after roslaunch (s)", moveit["up"], "{:.2f}"),
+        ("move_group planning, median (ms)", moveit["median"], "{:.1f}"),
+        ("move_group planning, 95th percentile (ms)", moveit["p95"], "{:.1f}"),
+        ("move_group planning, targets planned (%)", moveit["success"], "{:.1f}"),
+        ("KDL IK, median (ms)", moveit["ik"], "{:.2f}"),
     ]
     width = max(len(name) for name, _, _ in rows)
     lines = ["sim_bridge benchmark: 40 static objects, RB1-class robots (diff drive, 720-beam "

@@ -116,6 +116,7 @@ class AllowedCollisions:
         self.pairs: Set[FrozenSet[str]] = {frozenset(p) for p in pairs}
         self.everything: Dict[str, bool] = {name: True for name in everything}
         self.forbidden: Set[FrozenSet[str]] = set()     # explicit "not allowed" entries
+        self.version = 0       # counts the changes (the scene's list of pairs to check)
 
     def copy(self) -> "AllowedCollisions":
         other = AllowedCollisions()
@@ -127,6 +128,11 @@ class AllowedCollisions:
         pair = frozenset((a, b))
         (self.pairs.add if allowed else self.pairs.discard)(pair)
         (self.forbidden.discard if allowed else self.forbidden.add)(pair)
+        self.version += 1
+
+    def set_default(self, name: str, allowed: bool) -> None:
+        self.everything[name] = allowed
+        self.version += 1
 
     def allowed(self, a: str, b: str) -> bool:
         pair = frozenset((a, b))

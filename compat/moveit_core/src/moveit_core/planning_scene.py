@@ -147,6 +147,7 @@ class PlanningScene:
         self.objects: Dict[str, SceneObject] = {}
         self.attached: Dict[str, AttachedObject] = {}
         self._moved_by: Dict[Optional[str], Set[str]] = {}
+        self._pairs: Dict[tuple, tuple] = {}      # see _pairs_to_check
 
     def copy(self) -> "PlanningScene":
         """An independent scene (a planning request's, or another thread's): the same
@@ -161,6 +162,7 @@ class PlanningScene:
                           for name, a in self.attached.items()}
         other.acm = self.acm.copy()
         other._moved_by = dict(self._moved_by)
+        other._pairs = {}       # they name this scene's bodies
         return other
 
     # --- frames ------------------------------------------------------------------------
@@ -301,6 +303,32 @@ class PlanningScene:
                 self._moved_by[group] = moved
         return self._moved_by[group]
 
+    def _pairs_to_check(self, group: Optional[str]) -> tuple:
+        """(the bodies to place, the pairs to check): pairs of which one moves with the
+        group, not allowed by the matrix. Kept until the scene's objects, attached objects
+        or matrix change (planning checks thousands of states of one scene)."""
+        key = (group, tuple((n, id(o.body)) for n, o in self.objects.items()),
+               tuple((n, id(a.body)) for n, a in self.attached.items()), id(self.acm),
+               self.acm.version)
+        if key in self._pairs:
+            return self._pairs[key]
+        moving = self.moved_links(group)
+        links = list(self.links.values())
+        candidates = []
+        for i, a in enumerate(links):
+            candidates += [(a, b) for b in links[i + 1:] if a.name in moving or b.name in moving]
+            if a.name in moving:
+                candidates += [(a, obj.body) for obj in self.objects.values()]
+        for attached in self.attached.values():
+            if attached.link in moving:
+                candidates += [(attached.body, obj.body) for obj in self.objects.values()]
+                candidates += [(attached.body, link) for link in links
+                               if link.name not in attached.touch_links]
+        pairs = [(a, b) for a, b in candidates if not self.acm.allowed(a.name, b.name)]
+        placed = {id(body): body for pair in pairs for body in pair}
+        self._pairs = {key: (list(placed.values()), pairs)}
+        return self._pairs[key]
+
     def contacts(self, positions: Optional[Mapping[str, float]] = None,
                  group: Optional[str] = None, first_only: bool = True) -> List[Tuple[str, str]]:
         """The pairs in collision at ``positions`` (over the scene's state); with ``group``,
@@ -309,39 +337,24 @@ class PlanningScene:
         if positions:
             state.update(positions)
         poses = self.model.link_poses(state)
-        moving = self.moved_links(group)
-        for name, body in self.links.items():
-            body.place(poses[name])
-        for obj in self.objects.values():
-            obj.body.place(obj.pose)
-        for attached in self.attached.values():
-            attached.body.place(poses[attached.link] @ attached.offset)
+        bodies, pairs = self._pairs_to_check(group)
+        for body in bodies:
+            body.place(self._pose_of(body.name, poses))
         found: List[Tuple[str, str]] = []
-
-        def check(a: Body, b: Body) -> bool:
-            if not self.acm.allowed(a.name, b.name) and a.touches(b):
+        for a, b in pairs:
+            if a.touches(b):
                 found.append((a.name, b.name))
-                return first_only
-            return False
-        links = list(self.links.values())
-        for i, a in enumerate(links):
-            for b in links[i + 1:]:
-                if (a.name in moving or b.name in moving) and check(a, b):
-                    return found
-            if a.name in moving:
-                for obj in self.objects.values():
-                    if check(a, obj.body):
-                        return found
-        for attached in self.attached.values():
-            if attached.link not in moving:
-                continue
-            for obj in self.objects.values():
-                if check(attached.body, obj.body):
-                    return found
-            for link in links:
-                if link.name not in attached.touch_links and check(attached.body, link):
-                    return found
+                if first_only:
+                    break
         return found
+
+    def _pose_of(self, name: str, poses) -> np.ndarray:
+        if name in self.links:
+            return poses[name]
+        if name in self.attached:
+            attached = self.attached[name]
+            return poses[attached.link] @ attached.offset
+        return self.objects[name].pose
 
     def in_collision(self, positions: Optional[Mapping[str, float]] = None,
                      group: Optional[str] = None) -> bool:
@@ -404,7 +417,7 @@ def _apply_matrix(acm: AllowedCollisions, message: AllowedCollisionMatrix) -> No
             if i != j:
                 acm.set(names[i], names[j], bool(allowed))
     for name, allowed in zip(message.default_entry_names, message.default_entry_values):
-        acm.everything[name] = bool(allowed)
+        acm.set_default(name, bool(allowed))
 
 
 def _matrix_msg(acm: AllowedCollisions, names: Sequence[str]) -> AllowedCollisionMatrix:

@@ -20,7 +20,7 @@ from tf.transformations import euler_from_matrix, random_rotation_matrix
 
 from moveit_core.planning_scene import PlanningScene, SceneError, pose_matrix
 
-GOAL_SAMPLES = 4            # valid IK goals gathered before the search starts
+GOAL_SAMPLES = 4            # valid IK goals gathered for a search (one for a straight line)
 MAX_IK_TRIES = 40           # IK attempts for one goal set
 
 
@@ -153,8 +153,8 @@ def joint_goal(scene: PlanningScene, group: str, start: Mapping[str, float],
 
 
 def pose_goals(scene: PlanningScene, group: str, start: Mapping[str, float],
-               constraints: Constraints, solver, deadline: float, rng: np.random.Generator
-               ) -> Goals:
+               constraints: Constraints, solver, deadline: float, rng: np.random.Generator,
+               wanted: int = GOAL_SAMPLES) -> Goals:
     """Goal states of a position (and orientation) constraint, sampled by IK."""
     if solver is None:
         raise GoalError(MoveItErrorCodes.NO_IK_SOLUTION,
@@ -184,7 +184,7 @@ def pose_goals(scene: PlanningScene, group: str, start: Mapping[str, float],
     goals = Goals()
     seed = [start[j] for j in solver.joints]
     for attempt in range(MAX_IK_TRIES):
-        if len(goals.states) >= GOAL_SAMPLES or (attempt > 0 and time.monotonic() > deadline):
+        if len(goals.states) >= wanted or (attempt > 0 and time.monotonic() > deadline):
             break
         target = np.eye(4)
         target[:3, :3] = target_rotation if target_rotation is not None else \

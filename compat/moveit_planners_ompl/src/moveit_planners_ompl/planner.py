@@ -41,7 +41,7 @@ from ompl import util as ou
 from moveit_core.planning_scene import PlanningScene
 from moveit_core.robot_model import RobotModelError
 from moveit_core.time_parameterization import Timed, limits_of, time_path
-from moveit_planners_ompl.goals import GoalError, Goals, joint_goal, pose_goals
+from moveit_planners_ompl.goals import GOAL_SAMPLES, GoalError, Goals, joint_goal, pose_goals
 from moveit_planners_ompl.planner_configs import PlannerConfigs
 
 # rospy shows the rosout.* loggers on the console and /rosout
@@ -128,8 +128,10 @@ class OmplPlanner:
         if isinstance(start, PlanResult):
             return start
         prefix, start = start
+        # one goal first (IK from the start: most often the straight line reaches it), more
+        # for the search when the line is blocked
         goals = self._goals(scene, group_name, start, goals_given,
-                            began + allowed * GOAL_SHARE, rng)
+                            began + allowed * GOAL_SHARE, rng, wanted=1)
         if isinstance(goals, PlanResult):
             goals.start = prefix
             return goals
@@ -144,13 +146,17 @@ class OmplPlanner:
 
         order = np.argsort([np.linalg.norm(g - start_vector) for g in goal_vectors])
         path = None
-        for index in order:   # the straight line first: most requests need nothing else
-            if _motion_free(start_vector, goal_vectors[index], resolution, valid):
+        fine = resolution / FINAL_CHECK_DIVISOR
+        for index in order:   # the straight line first (checked as finely as a found path)
+            if _motion_free(start_vector, goal_vectors[index], fine, valid):
                 path = [start_vector, goal_vectors[index]]
                 break
-        fine = resolution / FINAL_CHECK_DIVISOR
-        if path is not None and not _path_free(path, fine, valid):
-            path = None        # free at the planning resolution, not between its states
+        if path is None and len(goals) < GOAL_SAMPLES and any(
+                c.position_constraints or c.orientation_constraints for c in goals_given):
+            more = self._goals(scene, group_name, start, goals_given,
+                               began + allowed * GOAL_SHARE, rng)
+            if not isinstance(more, PlanResult):
+                goal_vectors += [np.clip([g[j] for j in joints], lows, highs) for g in more]
         while path is None:
             path = self._search(joints, lows, highs, start_vector, goal_vectors, planning,
                                 resolution, valid, max(0.05, deadline - time.monotonic()), seed)
@@ -223,7 +229,7 @@ class OmplPlanner:
                 return trial
         return None
 
-    def _goals(self, scene, group, start, sets, deadline, rng):
+    def _goals(self, scene, group, start, sets, deadline, rng, wanted=GOAL_SAMPLES):
         states, found = [], Goals()
         for constraints in sets:
             if constraints.joint_constraints and not (constraints.position_constraints or
@@ -236,7 +242,7 @@ class OmplPlanner:
                     states.append(goal)
                 continue
             sampled = pose_goals(scene, group, start, constraints,
-                                 self._solver(group), deadline, rng)
+                                 self._solver(group), deadline, rng, wanted)
             found.ik_solutions += sampled.ik_solutions
             found.collisions += sampled.collisions
             states += sampled.states
