@@ -40,6 +40,7 @@ SOLVER_NAMES = (KDL_PLUGIN, "lma_kinematics_plugin/LMAKinematicsPlugin",
                 "cached_ik_kinematics_plugin/CachedKDLKinematicsPlugin",
                 "srv_kinematics_plugin/SrvKinematicsPlugin")
 MAX_ITERATIONS = 30       # steps of one attempt before a restart from a random state
+SEED_ITERATIONS = 150     # steps of the attempt from the seed
 POSITION_TOLERANCE = 1e-5  # m: an attempt has converged when the tip is this close
 ORIENTATION_TOLERANCE = 1e-4   # rad, when orientation counts
 DAMPING = 1e-6             # damped least squares: keeps steps finite near singularities
@@ -146,20 +147,23 @@ class KdlSolver:
         deadline = time.monotonic() + timeout
         goal = kdl_frame(target)
         start = [b.clamp(v) for b, v in zip(self.bounds, seed)]
-        while True:
-            solution = self._attempt(goal, start)
-            if solution is not None:
-                return solution
+        # the seed first, given longer: a solution near it is the one a caller stepping
+        # along a path wants (near a singularity the descent is slow)
+        solution = self._attempt(goal, start, SEED_ITERATIONS)
+        while solution is None:
             if time.monotonic() >= deadline:
                 return None
             start = [self._random.uniform(*self._range(b)) for b in self.bounds]
+            solution = self._attempt(goal, start)
+        return solution
 
-    def _attempt(self, goal: kdl.Frame, start: Sequence[float]) -> Optional[List[float]]:
+    def _attempt(self, goal: kdl.Frame, start: Sequence[float],
+                 iterations: int = MAX_ITERATIONS) -> Optional[List[float]]:
         """One descent from ``start``: the joints when the tip converged on ``goal``."""
         q = np.array(start, dtype=float)
         frame = kdl.Frame()
         weights = np.array([1.0, 1.0, 1.0, self.weight, self.weight, self.weight])
-        for _ in range(MAX_ITERATIONS):
+        for _ in range(iterations):
             array = self._array(q)
             self._fk.JntToCart(array, frame)
             twist = kdl.diff(frame, goal)          # in the base frame: (velocity, rotation)

@@ -6,7 +6,8 @@ first point (else CONTROL_FAILED); the trajectory's joints must all have a contr
 CONTROL_FAILED naming those without); execution longer than the trajectory's duration
 times ``allowed_execution_duration_scaling`` plus ``allowed_goal_duration_margin`` is
 stopped (TIMED_OUT); ``stop`` (``trajectory_execution_event`` "stop", or a cancelled goal)
-stops the controllers (PREEMPTED)."""
+stops the controllers (PREEMPTED); a success is reported once joint_states show the robot
+at the last point (as wait_for_trajectory_completion), a second at most."""
 from __future__ import annotations
 
 import threading
@@ -18,6 +19,8 @@ from moveit_msgs.msg import MoveItErrorCodes as Codes
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
 POLL = 0.01          # s between looks at the controllers
+ARRIVAL_WAIT = 1.0   # s: the longest the reported state may lag the controllers at the end
+ARRIVAL_TOLERANCE = 1e-3   # rad (m): the reported state at the last point
 
 
 @dataclass(frozen=True)
@@ -116,4 +119,16 @@ class TrajectoryExecutionManager:
         failed = [name for (name, _), run in zip(chosen.items(), runs) if not run.succeeded]
         if failed:
             return Codes.CONTROL_FAILED, f"controller(s) {failed} did not complete the motion"
+        self._wait_for_robot(joints, trajectory.points[-1].positions)
         return Codes.SUCCESS, f"executed in {rospy.get_time() - began:.2f} s"
+
+    def _wait_for_robot(self, joints: Sequence[str], final: Sequence[float]) -> None:
+        """As MoveIt's wait_for_trajectory_completion: the robot's reported state (through
+        joint_states, a publisher's period behind the controllers) has reached the last
+        point before the execution is reported done, ARRIVAL_WAIT s at most."""
+        deadline = rospy.get_time() + ARRIVAL_WAIT
+        while rospy.get_time() < deadline and not rospy.is_shutdown():
+            now = self.current.positions()
+            if all(abs(now.get(j, p) - p) <= ARRIVAL_TOLERANCE for j, p in zip(joints, final)):
+                return
+            rospy.sleep(POLL)

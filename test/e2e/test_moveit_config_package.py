@@ -1,0 +1,94 @@
+"""A Setup-Assistant-style MoveIt config package written here for an arm that is not the
+px100 (test/fixtures/moveit_ws: six_axis_arm_description, six_axis_arm_moveit_config with
+Noetic's layout (planning_pipelines, pass_all_args, $(dirname)), and six_axis_arm_demo, a
+package whose CMakeLists finds moveit_commander, moveit_core, moveit_ros_planning and
+moveit_ros_planning_interface and whose script follows MoveIt's Python tutorial). Built on
+top of this workspace as a user's own; ``roslaunch six_axis_arm_moveit_config demo.launch``
+with fake controllers; every target checked by the URDF's kinematics (urdf_tools, apart
+from move_group's) at the joint positions /joint_states reports: <= 1 mm, <= 0.01 rad."""
+import json
+import math
+import os
+import shutil
+import subprocess
+
+import numpy as np
+import pytest
+import yaml
+from tf.transformations import quaternion_matrix
+
+import headless
+from urdf_tools import load_urdf
+from urdf_tools.kinematics import link_transform
+
+FIXTURE = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                       "fixtures", "moveit_ws")
+JOINTS = ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint", "wrist_1_joint",
+          "wrist_2_joint", "wrist_3_joint"]
+READY = [0.0, 0.4, 0.8, 0.3, 0.5, 0.0]   # not the wrist's singular 0 (Cartesian steps)
+START_LIMIT = 60.0
+RUN_LIMIT = 240.0
+GOAL_IN_COLLISION = -12
+
+
+@pytest.fixture(scope="module")
+def overlay(tmp_path_factory):
+    workspace = tmp_path_factory.mktemp("moveit_ws")
+    shutil.copytree(os.path.join(FIXTURE, "src"), workspace / "src")
+    build = subprocess.run(["catkin_make", "-C", str(workspace),
+                            "-DPYTHON_EXECUTABLE=/usr/bin/python3"], cwd=workspace,
+                           capture_output=True, text=True, timeout=600, check=False)
+    assert build.returncode == 0, build.stdout[-3000:] + build.stderr[-3000:]
+    sourced = subprocess.run(["bash", "-c", "source devel/setup.bash && env -0"],
+                             cwd=workspace, capture_output=True, text=True, check=True)
+    return workspace, dict(line.split("=", 1) for line in sourced.stdout.split("\0")
+                           if "=" in line)
+
+
+def tool_pose(urdf, joints):
+    return link_transform(urdf, "base_link", "tool0", dict(zip(JOINTS, joints)))
+
+
+def pose_errors(urdf, joints, goal):
+    """(metres, radians) between the tool at ``joints`` and ``goal`` [x y z qx qy qz qw]."""
+    reached = tool_pose(urdf, joints)
+    wanted = quaternion_matrix(goal[3:])
+    turn = reached[:3, :3].T @ wanted[:3, :3]
+    angle = math.acos(max(-1.0, min(1.0, (np.trace(turn) - 1) / 2)))
+    return float(np.linalg.norm(reached[:3, 3] - goal[:3])), angle
+
+
+def test_a_setup_assistant_config_runs_the_tutorials_steps(overlay, ros_env, results_dir):
+    workspace, overlay_env = overlay
+    env = dict(overlay_env, ROS_MASTER_URI=ros_env["ROS_MASTER_URI"], ROS_HOME=ros_env["ROS_HOME"])
+    env.pop("DISPLAY", None)
+    urdf = load_urdf(str(workspace / "src" / "six_axis_arm_description" / "urdf" /
+                         "six_axis_arm.urdf"))
+    with headless.roslaunch(["six_axis_arm_moveit_config", "demo.launch", "use_rviz:=false"],
+                            env, os.path.join(results_dir, "demo.log")) as launch:
+        def up():
+            assert launch.running(), launch.output()[-3000:]
+            return "You can start planning now!" in launch.output()
+        headless.wait_until(up, START_LIMIT, "move_group")
+        run = subprocess.run(["rosrun", "six_axis_arm_demo", "demo_mover.py"], env=env,
+                             capture_output=True, text=True, timeout=RUN_LIMIT, check=False)
+        with open(os.path.join(results_dir, "demo_mover.log"), "w", encoding="utf-8") as log:
+            log.write(run.stdout + run.stderr)
+        assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-3000:]
+    steps = {s["step"]: s for s in (json.loads(line) for line in run.stdout.splitlines()
+                                    if line.startswith("{"))}
+    assert steps["info"] == {"step": "info", "frame": "world", "eef": "tool0",
+                             "groups": ["manipulator"]}
+    assert steps["named"]["ok"]
+    np.testing.assert_allclose(steps["named"]["joints"], READY, atol=0.01)
+    assert steps["joint"]["ok"]
+    np.testing.assert_allclose(steps["joint"]["joints"], steps["joint"]["goal"], atol=0.01)
+    assert steps["pose"]["ok"]
+    metres, radians = pose_errors(urdf, steps["pose"]["joints"], np.array(steps["pose"]["goal"]))
+    assert metres <= 0.001 and radians <= 0.01, (metres, radians)
+    assert steps["cartesian"]["ok"] and steps["cartesian"]["fraction"] == pytest.approx(1.0)
+    metres, radians = pose_errors(urdf, steps["cartesian"]["joints"],
+                                  np.array(steps["cartesian"]["goal"]))
+    assert metres <= 0.001 and radians <= 0.01, (metres, radians)
+    assert not steps["blocked"]["ok"] and steps["blocked"]["code"] == GOAL_IN_COLLISION
+    assert steps["blocked"]["objects"] == ["box"]
