@@ -10,7 +10,6 @@ import os
 import subprocess
 
 import numpy as np
-import pytest
 import rospy  # noqa: F401  (genpy's message classes need rospy's time)
 import yaml
 

@@ -14,7 +14,6 @@ import subprocess
 
 import numpy as np
 import pytest
-import yaml
 from tf.transformations import quaternion_matrix
 
 import headless

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import threading
 import time
-from typing import Dict, Optional, Tuple
+from typing import Dict, Tuple
 
 import rospy
 from sensor_msgs.msg import JointState

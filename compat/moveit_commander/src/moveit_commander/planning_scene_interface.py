@@ -6,7 +6,7 @@ has it; ``synchronous=False`` publishes on ``collision_object`` and
 trimesh (the real one needs pyassimp)."""
 from __future__ import annotations
 
-from typing import Dict, List, Optional
+from typing import Dict, List
 
 import rospy
 from geometry_msgs.msg import Point, Pose, PoseStamped

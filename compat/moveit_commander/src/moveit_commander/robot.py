@@ -5,7 +5,6 @@ from __future__ import annotations
 
 from typing import Dict, List, Optional
 
-import rospy
 from geometry_msgs.msg import PoseStamped
 from moveit_msgs.msg import RobotState
 from sensor_msgs.msg import JointState

@@ -77,7 +77,7 @@ def pipeline_parameters() -> Dict:
     return rospy.get_param("~", {})
 
 
-def controller_manager(current):
+def controller_manager():
     """The configured controller manager, or None (no execution), saying why."""
     plugin = _private("moveit_controller_manager", "")
     entries = _private("controller_list", [])
@@ -125,7 +125,7 @@ def main() -> int:
     planner = OmplPlanner(PlannerConfigs(pipeline), context.solver, adapters)
     executor = None
     if _private("allow_trajectory_execution", True):
-        manager = controller_manager(context.state)
+        manager = controller_manager()
         if manager is not None:
             executor = TrajectoryExecutionManager(manager, ExecutionSettings(
                 float(_private("trajectory_execution/allowed_execution_duration_scaling", 1.1)),

@@ -4,7 +4,7 @@ plans of the OMPL pipeline on a snapshot of the monitored scene, and plans execu
 trajectory execution manager. Functions of the request, so tested without a master."""
 from __future__ import annotations
 
-from typing import Optional, Tuple
+from typing import Tuple
 
 from moveit_msgs.msg import (MotionPlanResponse, MoveGroupResult, MoveItErrorCodes as Codes,
                              PlannerInterfaceDescription, RobotTrajectory)
