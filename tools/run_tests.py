@@ -54,12 +54,14 @@ ROSTEST_ALONE = ("my_rb1_ros/rotate.test", "diff_drive/flip_headings.test")
 # The e2e tier in two lanes side by side (each test starts its own master on a free port
 # and its own screen): the grader's batch tests (fault and calibration fixtures, graded two
 # or three at a time: a batch test checks that no batch process is left, so batches run one
-# after the other) and our RB1 solution graded, in the first; every other
-# test in the second; measured 400 + 50 s and 550 - 50 s. Most e2e time is waiting on
+# after the other), our RB1 solution graded and the MoveIt overlays (Interbotix's launch
+# lines, the Setup-Assistant config), in the first; every other test in the second;
+# measured 427 + 68 s and 511 - 68 s. Most e2e time is waiting on
 # simulations paced at real time: two lanes share the 2 cores.
 E2E_LANES = (lambda path: os.path.basename(path) in (
     "test_course_grader.py", "test_course_grader_faults.py",
-    "test_course_grader_calibration_hw3.py"), lambda path: True)
+    "test_course_grader_calibration_hw3.py", "test_interbotix_moveit.py",
+    "test_moveit_config_package.py"), lambda path: True)
 # The unit, description and fuzz tiers are CPU-bound; two lanes, about even: the
 # simulator's unit (and fuzz) tests beside the others'; ROS's lint and check tools over the
 # workspace (two thirds of the description tier) beside the description tests
