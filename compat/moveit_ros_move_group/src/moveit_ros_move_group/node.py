@@ -98,13 +98,16 @@ def controller_manager():
 
 
 def publish_initial_states(manager, context) -> None:
-    """The fake controllers' ``initial`` group states, published once."""
+    """The fake controllers' ``initial`` group states, published once, in one message (the
+    topic is latched: a joint state publisher that subscribes later hears the last message
+    only)."""
+    values = {}
     for entry in _private("initial", []) or []:
         try:
-            values = context.model.named_state(entry["group"], entry["pose"])
+            values.update(context.model.named_state(entry["group"], entry["pose"]))
         except (KeyError, TypeError, ValueError) as error:
             rospy.logerr("fake controllers: initial state %s cannot be used: %s", entry, error)
-            continue
+    if values:
         manager.publish(list(values), list(values.values()))
 
 

@@ -94,6 +94,13 @@ class PlanningExecution(unittest.TestCase):
     def arm(self):
         return [self.joints[j] for j in ARM]
 
+    def test_0_every_initial_group_state_is_published(self):
+        """The fake controllers' initial states of both groups reach /joint_states (one
+        latched message: a later one would hide the first)."""
+        wait_until(lambda: abs(self.joints.get("left_finger", 0.0) - 0.037) < 1e-6,
+                   what="the gripper's initial Open state")
+        np.testing.assert_allclose(self.arm(), [0.0, -1.88, 1.5, 0.8], atol=1e-9)   # Sleep
+
     def test_1_plan_only_leaves_the_robot_and_execution_moves_it(self):
         before = self.arm()
         target = [0.5, -0.3, 0.4, 0.2]
