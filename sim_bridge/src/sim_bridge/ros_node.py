@@ -593,6 +593,9 @@ class SimBridgeNode:
     def run(self, stop: StopSignals) -> None:
         """Steps and publishes until rospy shuts down or ``stop`` is requested."""
         self._publish_clock()
+        # the next /clock one period after this one (a subscriber already listening saw the
+        # start, then the first step, 1 ms apart, at a 250 Hz pub_clock_frequency)
+        self._next_clock_ns = self.world.now_ns + self.clock_period_ns
         last_paused_clock = 0.0
         while not rospy.is_shutdown() and not stop.requested:
             self.physics.serve()
