@@ -40,7 +40,8 @@ SOLVER_NAMES = (KDL_PLUGIN, "lma_kinematics_plugin/LMAKinematicsPlugin",
                 "cached_ik_kinematics_plugin/CachedKDLKinematicsPlugin",
                 "srv_kinematics_plugin/SrvKinematicsPlugin")
 MAX_ITERATIONS = 30       # steps of one attempt before a restart from a random state
-SEED_ITERATIONS = 150     # steps of the attempt from the seed
+SEED_ITERATIONS = 150     # steps from the seed for a step along a path (near a singularity
+                          # the descent is slow; a random restart would change branch)
 POSITION_TOLERANCE = 1e-5  # m: an attempt has converged when the tip is this close
 ORIENTATION_TOLERANCE = 1e-4   # rad, when orientation counts
 DAMPING = 1e-6             # damped least squares: keeps steps finite near singularities
@@ -139,17 +140,18 @@ class KdlSolver:
         return frame_matrix(frame)
 
     def inverse(self, target: np.ndarray, seed: Sequence[float],
-                timeout: Optional[float] = None) -> Optional[List[float]]:
+                timeout: Optional[float] = None,
+                seed_iterations: int = MAX_ITERATIONS) -> Optional[List[float]]:
         """Joint positions (the chain's joints, in order) putting the tip at ``target``
         (4x4, in the base link's frame; its rotation ignored with position_only_ik); None
-        when no solution was found within ``timeout`` s (the settings' when None)."""
+        when no solution was found within ``timeout`` s (the settings' when None).
+        ``seed_iterations``: the descent from the seed (a caller stepping along a path gives
+        it SEED_ITERATIONS, to stay on the seed's branch near a singularity)."""
         timeout = self.settings.kinematics_solver_timeout if not timeout else timeout
         deadline = time.monotonic() + timeout
         goal = kdl_frame(target)
         start = [b.clamp(v) for b, v in zip(self.bounds, seed)]
-        # the seed first, given longer: a solution near it is the one a caller stepping
-        # along a path wants (near a singularity the descent is slow)
-        solution = self._attempt(goal, start, SEED_ITERATIONS)
+        solution = self._attempt(goal, start, seed_iterations)
         while solution is None:
             if time.monotonic() >= deadline:
                 return None

@@ -20,6 +20,7 @@ from tf.transformations import quaternion_from_matrix, quaternion_matrix, quater
 from moveit_core.planning_scene import SceneError, pose_matrix
 from moveit_core.robot_model import RobotModelError
 from moveit_core.time_parameterization import joint_trajectory, limits_of, time_path
+from moveit_kinematics.kdl_solver import SEED_ITERATIONS
 from moveit_ros_move_group.conversions import MessageError, robot_state, state_positions
 
 PRECISION = 0.001          # m: a joint-space midpoint's link within this of the line's
@@ -83,7 +84,7 @@ def compute_cartesian_path(context, monitor, request) -> GetCartesianPathRespons
         done = 0
         for step in range(1, count + 1):
             pose = _between(current, target, step / count)
-            solution = solver.inverse(base_inverse @ pose, path[-1], None)
+            solution = solver.inverse(base_inverse @ pose, path[-1], None, SEED_ITERATIONS)
             if solution is None:
                 break
             q = np.array(solution)
