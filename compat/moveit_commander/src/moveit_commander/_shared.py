@@ -82,6 +82,18 @@ class Robot:
         return self.model.complete(known)
 
 
+def state_message(shared: "Robot"):
+    """The current state as a RobotState message: every single-dof joint, in model order."""
+    from moveit_msgs.msg import RobotState
+    model = shared.model
+    positions = shared.positions()
+    names = [j for j in model.joint_order if j in model.bounds]
+    state = RobotState()
+    state.joint_state = JointState(name=names, position=[positions[j] for j in names])
+    state.joint_state.header.frame_id = model.model_frame
+    return state
+
+
 def robot(description: str = "robot_description", ns: str = "") -> Robot:
     key = (description, ns)
     with _LOCK:

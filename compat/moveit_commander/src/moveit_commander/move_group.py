@@ -29,11 +29,12 @@ from sensor_msgs.msg import JointState
 from shape_msgs.msg import SolidPrimitive
 from std_msgs.msg import String
 from tf.transformations import (euler_from_quaternion, quaternion_from_euler,
-                                quaternion_from_matrix, quaternion_matrix)
+                                quaternion_matrix)
 from trajectory_msgs.msg import JointTrajectory
 
 from moveit_commander import _shared, conversions
 from moveit_commander.exception import MoveItCommanderException
+from moveit_core.planning_scene import matrix_pose as _matrix_pose
 from moveit_core.time_parameterization import joint_trajectory, limits_of, time_path
 
 ACTIONS = (("move_group", MoveGroupAction), ("pickup", PickupAction), ("place", PlaceAction),
@@ -47,12 +48,6 @@ def _pose_matrix(pose: Pose) -> np.ndarray:
     matrix = quaternion_matrix(q / (np.linalg.norm(q) or 1.0))
     matrix[:3, 3] = (pose.position.x, pose.position.y, pose.position.z)
     return matrix
-
-
-def _matrix_pose(matrix: np.ndarray) -> Pose:
-    full = np.eye(4)
-    full[:3, :3] = matrix[:3, :3]
-    return conversions.list_to_pose(list(matrix[:3, 3]) + list(quaternion_from_matrix(full)))
 
 
 class MoveGroupCommander:
@@ -161,12 +156,7 @@ class MoveGroupCommander:
         return [positions[j] for j in self._group.variables]
 
     def get_current_state(self) -> RobotState:
-        positions = self._robot.positions()
-        names = [j for j in self._model.joint_order if j in self._model.bounds]
-        state = RobotState()
-        state.joint_state = JointState(name=names, position=[positions[j] for j in names])
-        state.joint_state.header.frame_id = self._model.model_frame
-        return state
+        return _shared.state_message(self._robot)
 
     def get_current_state_bounded(self) -> RobotState:
         state = self.get_current_state()

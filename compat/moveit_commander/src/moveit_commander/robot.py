@@ -7,7 +7,6 @@ from typing import Dict, List, Optional
 
 from geometry_msgs.msg import PoseStamped
 from moveit_msgs.msg import RobotState
-from sensor_msgs.msg import JointState
 from visualization_msgs.msg import MarkerArray
 
 from moveit_commander import _shared
@@ -101,12 +100,7 @@ class RobotCommander:
                                    for j in self._model.joint_order])
 
     def get_current_state(self) -> RobotState:
-        positions = self._shared.positions()
-        names = [j for j in self._model.joint_order if j in self._model.bounds]
-        state = RobotState()
-        state.joint_state = JointState(name=names, position=[positions[j] for j in names])
-        state.joint_state.header.frame_id = self._model.model_frame
-        return state
+        return _shared.state_message(self._shared)
 
     def get_current_variable_values(self) -> Dict[str, float]:
         positions = self._shared.positions()

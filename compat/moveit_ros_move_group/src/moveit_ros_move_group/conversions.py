@@ -8,7 +8,9 @@ import numpy as np
 from geometry_msgs.msg import Pose
 from moveit_msgs.msg import RobotState
 from sensor_msgs.msg import JointState
-from tf.transformations import quaternion_from_matrix, quaternion_matrix
+from tf.transformations import quaternion_matrix
+
+from moveit_core.planning_scene import matrix_pose  # noqa: F401  (one Pose builder)
 
 
 class MessageError(ValueError):
@@ -28,16 +30,6 @@ def pose_matrix(pose: Pose, what: str = "pose") -> np.ndarray:
     matrix = quaternion_matrix(quaternion / norm)
     matrix[:3, 3] = values[:3]
     return matrix
-
-
-def matrix_pose(matrix: np.ndarray) -> Pose:
-    pose = Pose()
-    pose.position.x, pose.position.y, pose.position.z = (float(v) for v in matrix[:3, 3])
-    full = np.eye(4)
-    full[:3, :3] = matrix[:3, :3]
-    (pose.orientation.x, pose.orientation.y, pose.orientation.z,
-     pose.orientation.w) = (float(v) for v in quaternion_from_matrix(full))
-    return pose
 
 
 def state_positions(state: RobotState, current: Mapping[str, float]) -> Dict[str, float]:

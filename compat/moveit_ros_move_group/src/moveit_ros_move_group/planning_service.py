@@ -46,7 +46,7 @@ class Planning:
 
     def _start_state(self, result: PlanResult):
         model = self.context.model
-        start = model.complete(dict(self.monitor.snapshot().positions, **result.start))
+        start = model.complete(dict(self.monitor.current.positions(), **result.start))
         return robot_state(start, [j for j in model.joint_order if j in model.bounds])
 
     # --- plan_kinematic_path -----------------------------------------------------------
