@@ -113,13 +113,27 @@ def _ramped(delta: np.ndarray, velocity: np.ndarray, acceleration: np.ndarray) -
         with np.errstate(divide="ignore"):
             corner = np.min(np.where(turn > 1e-12, np.sqrt(acceleration * reach / turn), np.inf))
         speed[i] = min(top[i - 1], top[i], corner)
-    for i in range(len(delta)):            # accelerating forward
+    for i in np.flatnonzero(moving):            # accelerating forward
         speed[i + 1] = min(speed[i + 1], math.sqrt(speed[i] ** 2 + 2 * push[i] * lengths[i]))
-    for i in reversed(range(len(delta))):  # braking backward
+    for i in reversed(np.flatnonzero(moving)):  # braking backward
         speed[i] = min(speed[i], math.sqrt(speed[i + 1] ** 2 + 2 * push[i] * lengths[i]))
-    dt = np.where(moving, 2 * lengths / np.maximum(speed[:-1] + speed[1:], 1e-12), 0.0)
+    dt = np.zeros(len(delta))
+    for i in np.flatnonzero(moving):
+        dt[i] = _segment_time(lengths[i], speed[i], speed[i + 1], top[i], push[i])
     # and never faster than the slowest joint's full speed over the segment
     return np.maximum(np.maximum(dt, np.max(np.abs(delta) / velocity, axis=1)), 1e-6)
+
+
+def _segment_time(length: float, start: float, end: float, top: float, push: float) -> float:
+    """The time over ``length`` from speed ``start`` to ``end``, accelerating at ``push``
+    up to at most ``top`` and braking again (a trapezoid, or a triangle when the segment
+    is too short for full speed). The passes above made the end speeds reachable; a
+    segment from rest to rest (a two-point path) is the whole profile."""
+    peak = min(top, math.sqrt(push * length + (start ** 2 + end ** 2) / 2))
+    peak = max(peak, start, end)
+    ramps = (peak ** 2 - start ** 2 + peak ** 2 - end ** 2) / (2 * push)
+    cruise = max(length - ramps, 0.0)
+    return (peak - start) / push + (peak - end) / push + (cruise / peak if peak > 0 else 0.0)
 
 
 def limits_of(model, joints: Sequence[str]):

@@ -47,11 +47,14 @@ def test_one_waypoint_and_bad_paths():
         time_path([[0.0, float("nan")]], [1, 1], [1, 1])
 
 
-@pytest.mark.parametrize("distance, vmax, amax", [(2.0, 2.35, 5.0), (0.011, 1.0, 0.01)])
-def test_a_straight_path_takes_the_trapezoids_time(distance, vmax, amax):
-    """Dense waypoints on a line (as a planner interpolates them): rest to rest in the
-    time of the ideal trapezoid (or triangle) within 1 %, not crawling."""
-    q = np.linspace(0.0, distance, 66)[:, None]
+@pytest.mark.parametrize("points", [66, 3, 2])
+@pytest.mark.parametrize("distance, vmax, amax", [(2.0, 2.35, 5.0), (0.011, 1.0, 0.01),
+                                                  (0.001, 2.35, 5.0)])
+def test_a_straight_path_takes_the_trapezoids_time(distance, vmax, amax, points):
+    """Waypoints on a line, dense (as a planner interpolates them) or only the two ends (a
+    goal a millimetre away: the two-point path took 3.8e9 s, which no Duration holds):
+    rest to rest in the time of the ideal trapezoid (or triangle) within 1 %."""
+    q = np.linspace(0.0, distance, points)[:, None]
     ramp = vmax / amax
     ideal = distance / vmax + ramp if vmax * ramp < distance else 2 * np.sqrt(distance / amax)
     assert time_path(q, [vmax], [amax]).times[-1] == pytest.approx(ideal, rel=0.01)
