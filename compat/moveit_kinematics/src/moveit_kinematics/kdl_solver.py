@@ -21,7 +21,7 @@ import math
 import random
 import time
 from dataclasses import dataclass
-from typing import Dict, List, Mapping, Optional, Sequence
+from typing import Callable, Dict, List, Mapping, Optional, Sequence
 
 import numpy as np
 import PyKDL as kdl
@@ -141,18 +141,22 @@ class KdlSolver:
 
     def inverse(self, target: np.ndarray, seed: Sequence[float],
                 timeout: Optional[float] = None,
-                seed_iterations: int = MAX_ITERATIONS) -> Optional[List[float]]:
+                seed_iterations: int = MAX_ITERATIONS,
+                accept: Optional[Callable[[List[float]], bool]] = None
+                ) -> Optional[List[float]]:
         """Joint positions (the chain's joints, in order) putting the tip at ``target``
         (4x4, in the base link's frame; its rotation ignored with position_only_ik); None
         when no solution was found within ``timeout`` s (the settings' when None).
         ``seed_iterations``: the descent from the seed (a caller stepping along a path gives
-        it SEED_ITERATIONS, to stay on the seed's branch near a singularity)."""
+        it SEED_ITERATIONS, to stay on the seed's branch near a singularity). ``accept``:
+        MoveIt's solution callback (collision-aware IK): a solution it refuses counts as
+        none, and the search goes on from random seeds."""
         timeout = self.settings.kinematics_solver_timeout if not timeout else timeout
         deadline = time.monotonic() + timeout
         goal = kdl_frame(target)
         start = [b.clamp(v) for b, v in zip(self.bounds, seed)]
         solution = self._attempt(goal, start, seed_iterations)
-        while solution is None:
+        while solution is None or (accept is not None and not accept(solution)):
             if time.monotonic() >= deadline:
                 return None
             start = [self._random.uniform(*self._range(b)) for b in self.bounds]

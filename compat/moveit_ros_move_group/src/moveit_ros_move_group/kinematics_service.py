@@ -7,8 +7,10 @@ the model frame; empty: the model frame) for ``robot_state`` applied to the curr
 a link the robot lacks is left out and the answer is INVALID_LINK_NAME, as MoveIt's.
 compute_ik: the group's solver from the seed (``robot_state`` over the current state)
 within ``timeout`` (0: the solver's ``kinematics_solver_timeout``); the solution holds
-every joint of the robot, the group's changed. Collision-aware IK (``avoid_collisions``)
-is not checked yet: move_group has no planning scene in this version, and says so once.
+every joint of the robot, the group's changed. With ``avoid_collisions`` a solution must
+be free in the planning scene (the robot, attached objects, the world; the allowed
+collision matrix applies), as MoveIt's collision-aware IK: when none is found within the
+timeout the answer is NO_IK_SOLUTION, and the log names what the last solution touched.
 """
 from __future__ import annotations
 
@@ -61,7 +63,8 @@ def compute_fk(context: MoveGroupContext, request) -> GetPositionFKResponse:
     return response
 
 
-def compute_ik(context: MoveGroupContext, request) -> GetPositionIKResponse:
+def compute_ik(context: MoveGroupContext, request, monitor=None) -> GetPositionIKResponse:
+    """``monitor``: move_group's scene monitor, for ``avoid_collisions``."""
     response = GetPositionIKResponse()
     ik = request.ik_request
     code = MoveItErrorCodes()
@@ -72,9 +75,6 @@ def compute_ik(context: MoveGroupContext, request) -> GetPositionIKResponse:
         unknown = ik.group_name not in context.model.groups
         response.error_code.val = (code.INVALID_GROUP_NAME if unknown else code.NO_IK_SOLUTION)
         return response
-    if ik.avoid_collisions:
-        _say_once("compute_ik: avoid_collisions is not checked yet (no planning scene in this "
-                  "move_group); solutions may collide")
     link = ik.ik_link_name or solver.tip
     if link != solver.tip:
         LOG.error("compute_ik: group '%s' solves for its tip '%s', not '%s'", ik.group_name,
@@ -99,9 +99,20 @@ def compute_ik(context: MoveGroupContext, request) -> GetPositionIKResponse:
     base = context.frame_pose(solver.base, seed)
     in_base = np.linalg.inv(base) @ frame @ target
     timeout = ik.timeout.to_sec()
+    accept, touched = None, []
+    if ik.avoid_collisions and monitor is not None:
+        scene = monitor.snapshot()
+
+        def accept(solution):
+            hit = scene.contacts(dict(seed, **solver.state(solution)), ik.group_name)
+            touched[:] = hit
+            return not hit
     solution = solver.inverse(in_base, [seed.get(j, 0.0) for j in solver.joints],
-                              timeout if timeout > 0 else None)
+                              timeout if timeout > 0 else None, accept=accept)
     if solution is None:
+        if touched:
+            LOG.info("compute_ik: no collision-free solution for group '%s' (the last one "
+                     "found: %s touches %s)", ik.group_name, *touched[0])
         response.error_code.val = code.NO_IK_SOLUTION
         return response
     seed.update(solver.state(solution))
@@ -111,11 +122,3 @@ def compute_ik(context: MoveGroupContext, request) -> GetPositionIKResponse:
     response.error_code.val = code.SUCCESS
     return response
 
-
-_SAID = set()
-
-
-def _say_once(message: str) -> None:
-    if message not in _SAID:
-        _SAID.add(message)
-        LOG.warning(message)

@@ -155,7 +155,7 @@ def main() -> int:
         served += [rospy.Service("compute_fk", GetPositionFK,
                                  lambda r: kinematics_service.compute_fk(context, r)),
                    rospy.Service("compute_ik", GetPositionIK,
-                                 lambda r: kinematics_service.compute_ik(context, r))]
+                                 lambda r: kinematics_service.compute_ik(context, r, monitor))]
     if wanted("move_group/MoveGroupGetPlanningSceneService"):
         served.append(rospy.Service("get_planning_scene", GetPlanningScene,
                                     lambda r: scene_service.get_planning_scene(monitor, r)))

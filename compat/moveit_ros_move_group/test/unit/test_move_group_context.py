@@ -62,3 +62,37 @@ def test_fk_and_ik_answer_from_the_current_state():
     ik.ik_request.pose_stamped.pose.orientation.w = 0.0      # a zero quaternion
     assert kinematics_service.compute_ik(context, ik).error_code.val == \
         MoveItErrorCodes.INVALID_GOAL_CONSTRAINTS
+
+
+def test_collision_aware_ik_refuses_a_target_inside_an_object():
+    """avoid_collisions as MoveIt's: a target inside a box has IK solutions, none of them
+    free: NO_IK_SOLUTION; without the flag the colliding solution is the answer; a free
+    target is solved either way."""
+    from geometry_msgs.msg import Pose
+    from moveit_msgs.msg import CollisionObject
+    from shape_msgs.msg import SolidPrimitive
+    from moveit_core.planning_scene import PlanningScene
+    from moveit_ros_move_group.scene_monitor import SceneMonitor
+
+    context = from_parameters(parameters(**px100()))
+    monitor = SceneMonitor(PlanningScene(context.model), context.state)
+    box = CollisionObject(id="crate", operation=CollisionObject.ADD)
+    box.header.frame_id = "world"
+    box.primitives = [SolidPrimitive(type=SolidPrimitive.BOX, dimensions=[0.06, 0.06, 0.06])]
+    box.primitive_poses = [Pose()]
+    box.primitive_poses[0].position.x, box.primitive_poses[0].position.z = 0.2, 0.1
+    box.primitive_poses[0].orientation.w = 1.0
+    monitor.scene.apply_collision_object(box)
+
+    def ik_to(x, z, avoid):
+        request = GetPositionIKRequest()
+        request.ik_request.group_name = "interbotix_arm"
+        request.ik_request.avoid_collisions = avoid
+        request.ik_request.pose_stamped.pose.position.x = x
+        request.ik_request.pose_stamped.pose.position.z = z
+        request.ik_request.pose_stamped.pose.orientation.w = 1.0
+        return kinematics_service.compute_ik(context, request, monitor).error_code.val
+
+    assert ik_to(0.2, 0.1, avoid=True) == MoveItErrorCodes.NO_IK_SOLUTION
+    assert ik_to(0.2, 0.1, avoid=False) == MoveItErrorCodes.SUCCESS
+    assert ik_to(0.15, 0.25, avoid=True) == MoveItErrorCodes.SUCCESS
