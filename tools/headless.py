@@ -72,8 +72,8 @@ XVFB_START_LOCK = "/tmp/.xvfb-start.lock"
 @contextlib.contextmanager
 def virtual_display(width: int = 1024, height: int = 768,
                     timeout: float = 20.0) -> Iterator[str]:
-    """Starts Xvfb on a display it picks itself (``-displayfd``), one start at a time across
-    processes (XVFB_START_LOCK); yields the DISPLAY value."""
+    """Starts Xvfb on a display it picks itself (``-displayfd``), one start or stop at a time
+    across processes (XVFB_START_LOCK); yields the DISPLAY value."""
     if shutil.which("Xvfb") is None:
         raise RuntimeError("Xvfb is not installed; run 'make' to set up the workspace")
     read_end, write_end = os.pipe()
@@ -98,11 +98,18 @@ def virtual_display(width: int = 1024, height: int = 768,
                    timeout, f"Xvfb on {display}")
         yield display
     finally:
-        server.terminate()
-        try:
-            server.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            server.kill()
+        # stopped under the start lock too: an Xvfb that is shutting down has given up its
+        # display's lock file before it removes the display's socket, so one starting then
+        # may take the number and lose its socket to the old server's clean-up (pybullet's
+        # "cannot connect to X server :0" beside another lane's display stopping)
+        with open(XVFB_START_LOCK, "a", encoding="utf-8") as lock:
+            fcntl.flock(lock, fcntl.LOCK_EX)
+            server.terminate()
+            try:
+                server.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                server.kill()
+                server.wait()
 
 
 class Launch:
