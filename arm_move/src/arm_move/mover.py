@@ -1,36 +1,36 @@
-"""The ``mover`` node: reset, step and follow for the px100, with MoveIt's error codes.
+"""The ``mover`` node: reset, step and follow for the PincherX 100, planned by MoveIt.
 
-Runs in the arm's namespace (``px100``). At start-up it reads its settings once (private
-parameters from config/mover.yaml; the arm and scene from config/px100.yaml and
-config/scene.yaml unless ``~robot_config`` / ``~scene_config`` name others), adds the
-table to its planning scene and checks it is there, loads ``~waypoints`` (a list of
-``[x, y, z, gripper_open]``; none: empty), waits for the arm's joint states and for the
-two trajectory controllers' action servers (``arm_controller`` and ``gripper_controller``
-``/follow_joint_trajectory``, as the simulator's ros_control, the fake executor, or a
-real driver provide them) and only then offers its services:
+A client of move_group through moveit_commander, as the homework asks: the arm is
+Interbotix's ``interbotix_arm`` group, the gripper ``interbotix_gripper`` with its named
+states Open and Closed. The node runs in the arm's namespace (``px100``, where
+xsarm_moveit.launch starts move_group); settings are its private parameters
+(config/mover.yaml), the scene comes from config/scene.yaml.
 
-- ``reset`` (arm_move/Reset): places the RealSense box (planning scene, and the simulation
-  when ``/gazebo/set_model_state`` answers), then moves the arm to Home around it, gripper
-  open; ``clear_waypoints`` forgets the list. A box pose inside the table or another
-  scene object (GOAL_IN_COLLISION) or reaching below the floor (INVALID_GOAL_CONSTRAINTS)
-  is refused naming the pose and what it is in; nothing moves.
-- ``step`` (arm_move/Step): plans the gripper point to a position, moves, then opens or
-  closes the gripper; only when all of that succeeded is ``[x, y, z, gripper_open]``
-  appended to ``~waypoints``. A planning failure moves nothing; a failed execution
-  (CONTROL_FAILED, TIMED_OUT) may leave the arm part of the way; either way the list stays
-  as it was and the code says why (see
-  arm_move.planner: below the floor or NaN → INVALID_GOAL_CONSTRAINTS, out of reach →
-  NO_IK_SOLUTION, inside an object → GOAL_IN_COLLISION...).
-- The block (``pick_object``) is in the planning scene from the start, where
-  config/scene.yaml puts it. Closing the gripper around it attaches it to the hand (as
-  MoveIt's attachObject): from then on it moves with the hand and is checked against the
-  scene and the arm; opening the gripper detaches it where it is.
-- ``follow`` (arm_move/Follow): goes through the waypoints in order, once (the call returns
-  when done) or repeating in the background until ``reset`` or another ``follow``.
-  No waypoints: INVALID_MOTION_PLAN, nothing moves.
+At start-up it adds the table and the block (``pick_object``) to the planning scene and
+checks they arrived, loads ``~waypoints`` (a list of ``[x, y, z, gripper_open]``), and
+offers:
 
-A request while another runs is refused (FAILURE, "busy"). The scene and each planned
-path are published as markers (``planning_scene``, ``planned_path``).
+- ``reset`` (arm_move/Reset): puts the RealSense box at a pose (planning scene, and the
+  simulation when ``/gazebo/set_model_state`` answers), then moves the arm Home and opens
+  the gripper; ``clear_waypoints`` forgets the list. A box pose inside the table or the
+  block (GOAL_IN_COLLISION) or reaching below the floor (INVALID_GOAL_CONSTRAINTS) is
+  refused naming the pose and what it is in; nothing moves.
+- ``step`` (arm_move/Step): moves the gripper point to a position, then opens or closes the
+  gripper; only when all of that succeeded is ``[x, y, z, gripper_open]`` appended to
+  ``~waypoints``. The arm is a 4-joint arm: it reaches a position with the waist facing it
+  and a gripper pitch, which is chosen as the first of a fan (straight down first, then
+  further and further from it) that has a collision-free IK solution (move_group's
+  ``compute_ik``, seeded with the current state: the nearer elbow wins); the path to those
+  joints is move_group's plan. The answer is MoveIt's error code: a target that is not
+  finite or is below the floor INVALID_GOAL_CONSTRAINTS, no pitch reaches it
+  NO_IK_SOLUTION, every reaching pose touches something GOAL_IN_COLLISION (naming it),
+  a planning or execution failure move_group's code.
+- ``follow`` (arm_move/Follow): steps through the waypoints once, or (``repeat``) over and
+  over in the background until reset or another follow.
+
+The block: closing the gripper with the block between the fingers attaches it to the
+gripper (MoveIt's attach_object, the fingers as touch links); opening it detaches it where
+it is. A second request while one runs is answered FAILURE (busy).
 """
 from __future__ import annotations
 
@@ -40,63 +40,65 @@ import sys
 import threading
 import time
 from dataclasses import dataclass
-from typing import List, Optional
+from typing import Any, Dict, List, Optional, Sequence, Tuple
 
 import actionlib
+from actionlib.action_client import CommState
+import moveit_commander
 import numpy as np
 import rospkg
 import rospy
-import yaml
-from control_msgs.msg import FollowJointTrajectoryAction, FollowJointTrajectoryGoal
-from sensor_msgs.msg import JointState
-from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
-from visualization_msgs.msg import Marker, MarkerArray
-
 import tf.transformations as tft
+import yaml
+from moveit_msgs.msg import (ExecuteTrajectoryAction, ExecuteTrajectoryGoal, MoveItErrorCodes
+                             as Codes, RobotState)
+from moveit_msgs.srv import (GetPositionIK, GetPositionIKRequest, GetStateValidity,
+                             GetStateValidityRequest)
+from sensor_msgs.msg import JointState
 
-from arm_move.collision import Box, fingers_around
-from arm_move.kinematics import ARM_JOINTS, FINGER_JOINTS
-from arm_move.markers import path_marker, scene_markers
-from arm_move.msg import MoveItErrorCodes as Codes
-from arm_move.planner import ArmPlanner, Plan, planner_from_config, settings_from
-from node_params import non_empty, non_negative, parameter, positive
-from arm_move.scene_config import (PICK_OBJECT, REALSENSE_BOX, TABLE, empty_scene, pick_box,
-                                   table_box, unit_quaternion)
-from arm_move.srv import (Follow, FollowResponse, Reset, ResetResponse, Step, StepResponse)
+from arm_move.scene import (PICK_OBJECT, REALSENSE_BOX, TABLE, floor_height,
+                            placement_problem, pose_stamped, unit_quaternion, yaw_quaternion)
+from arm_move.srv import Follow, FollowResponse, Reset, ResetResponse, Step, StepResponse
+from node_params import between, non_empty, parameter, positive, read
 
-# how often (wall s) start-up checks whether the joint states have come
-POLL_PERIOD = 0.05
-
-
-def _server_within(client: actionlib.SimpleActionClient, timeout: float) -> bool:
-    """Whether ``client``'s action server answers within ``timeout`` wall seconds. Start-up
-    is bounded in wall time: a simulator running many times faster than real time used up a
-    simulated 10 s before the controller spawner (a process starting in wall time) had
-    loaded the controllers, and with physics paused simulated time would never run out."""
-    answered: List[bool] = []
-    waiting = threading.Thread(target=lambda: answered.append(client.wait_for_server()),
-                               daemon=True)
-    waiting.start()
-    waiting.join(timeout)
-    return bool(answered and answered[0])
+CODE_NAMES = {value: name for name, value in vars(Codes).items()
+              if name.isupper() and isinstance(value, int)}
+SCENE_POLL = 0.05        # wall s between looks at the planning scene after a change
+RESULT_POLL = 0.005      # wall s between looks at a running motion
 
 
 @dataclass(frozen=True)
 class MoverSettings:
-    """The mover's own settings (the planner's are PlannerSettings); see config/mover.yaml.
-    Read with node_params: a bad value stops the node naming it."""
+    """The mover's settings (private parameters, config/mover.yaml); a bad value stops the
+    node naming it."""
 
-    planning_frame: str = parameter("px100/base_link", non_empty,
-                                    expected="the frame plans and markers are in")
-    collision_padding: float = parameter(
-        0.005, non_negative, expected="metres >= 0 the arm keeps from everything")
-    action_timeout: float = parameter(
-        10.0, positive, expected="wall seconds > 0 to wait for the controllers' action servers "
-                                 "at start-up (arm.launch's driver_timeout)")
-    execution_margin: float = parameter(
-        5.0, non_negative, expected="seconds >= 0 a motion may run past its planned time")
-    robot_config: str = parameter("", expected="the arm's yaml (empty: config/px100.yaml)")
+    arm_group: str = parameter("interbotix_arm", non_empty, expected="the arm's MoveIt group")
+    gripper_group: str = parameter("interbotix_gripper", non_empty,
+                                   expected="the gripper's MoveIt group")
+    open_state: str = parameter("Open", non_empty, expected="the gripper group's open state")
+    closed_state: str = parameter("Closed", non_empty,
+                                  expected="the gripper group's closed state")
+    frame: str = parameter("px100/base_link", non_empty,
+                           expected="the frame of step targets, box poses and the scene")
+    preferred_pitch_degrees: float = parameter(
+        90.0, between(-180.0, 180.0), expected="the gripper pitch tried first (90: down)")
+    pitch_step_degrees: float = parameter(10.0, positive,
+                                          expected="degrees > 0 between the pitches tried")
+    pitch_range_degrees: List[float] = parameter(
+        (-60.0, 150.0), expected="[lowest, highest] gripper pitch tried, degrees")
+    ik_timeout: float = parameter(0.02, positive, expected="s > 0 compute_ik tries a pitch")
+    planning_time: float = parameter(1.0, positive, expected="s > 0 move_group may plan")
+    velocity_scaling: float = parameter(0.5, between(0.0, 1.0),
+                                        expected="of the joints' speed limits, 0 to 1")
+    acceleration_scaling: float = parameter(0.5, between(0.0, 1.0),
+                                            expected="of the joints' acceleration limits")
+    execution_timeout: float = parameter(60.0, positive,
+                                         expected="s > 0 a motion may take to be done")
+    start_timeout: float = parameter(
+        60.0, positive, expected="wall s > 0 to wait for move_group at start-up")
     scene_config: str = parameter("", expected="the scene's yaml (empty: config/scene.yaml)")
+    waypoints: Any = parameter(
+        None, expected="a list of [x, y, z, gripper_open] (gripper_open true or false)")
 
 
 class Outcome(Exception):
@@ -107,12 +109,11 @@ class Outcome(Exception):
         self.code, self.message = code, message
 
 
-def _read_yaml(path: str):
-    with open(path) as stream:
-        return yaml.safe_load(stream)
+def code_name(code: int) -> str:
+    return f"{CODE_NAMES.get(code, 'code')} {code}"
 
 
-def parse_waypoints(value) -> List[List[float]]:
+def parse_waypoints(value) -> List[List]:
     """``~waypoints`` as [[x, y, z, open], ...]; ValueError naming the bad entry."""
     if value is None:
         return []
@@ -122,98 +123,106 @@ def parse_waypoints(value) -> List[List[float]]:
     for index, entry in enumerate(value):
         if not isinstance(entry, (list, tuple)) or len(entry) != 4:
             raise ValueError(f"~waypoints[{index}] must be [x, y, z, gripper_open], got {entry!r}")
-        x, y, z, gripper_open = entry
-        numbers = [float(x), float(y), float(z)]
+        numbers = [float(v) for v in entry[:3]]
         if not all(math.isfinite(n) for n in numbers):
             raise ValueError(f"~waypoints[{index}] has a position that is not finite: {entry!r}")
-        parsed.append(numbers + [bool(gripper_open)])
+        parsed.append(numbers + [bool(entry[3])])
     return parsed
 
 
+def pitch_fan(settings: MoverSettings) -> List[float]:
+    """The gripper pitches tried, radians: the preferred one, then alternately beyond and
+    short of it, one step further each time, within the range."""
+    low, high = settings.pitch_range_degrees
+    preferred, step = settings.preferred_pitch_degrees, settings.pitch_step_degrees
+    fan, k = [preferred], 1
+    while preferred + k * step <= high or preferred - k * step >= low:
+        fan += [p for p in (preferred - k * step, preferred + k * step) if low <= p <= high]
+        k += 1
+    return [math.radians(p) for p in fan]
+
+
 class Mover:
-    def __init__(self, settings: MoverSettings, planner: ArmPlanner, scene_config: dict,
-                 waypoints: List[List[float]]):
+    def __init__(self, settings: MoverSettings, scene_config: dict):
         self.settings = settings
-        self.planner = planner
-        self.k = planner.k
         self.scene_config = scene_config
-        self.scene = empty_scene(scene_config)
-        self.finger_length = float(planner.model.finger_length)
-        self.waypoints = waypoints
+        self.waypoints = parse_waypoints(settings.waypoints)
+        self.pitches = pitch_fan(settings)
+        self.floor = floor_height(scene_config)
         self._busy = threading.Lock()
-        self._state_lock = threading.Lock()
-        self._positions = {}
-        self._state_stamp = None
         self._cycle: Optional[threading.Thread] = None
         self._stop_cycle = threading.Event()
+        self.holding = False
 
     # --- start-up ------------------------------------------------------------------------
     def start(self) -> None:
-        frame = self.settings.planning_frame
-        self._scene_topic = rospy.Publisher("planning_scene", MarkerArray, queue_size=1,
-                                            latch=True)
-        self._path_topic = rospy.Publisher("planned_path", Marker, queue_size=1, latch=True)
-        self.scene.add(table_box(self.scene_config))
-        self.scene.add(pick_box(self.scene_config))
-        for name in (TABLE, PICK_OBJECT):  # what MoveIt users do: check the objects arrived
-            if name not in self.scene.boxes:
-                raise RuntimeError(f"the {name} did not reach the planning scene")
-        self._publish_scene()
-        rospy.loginfo("mover: planning scene has the %s and the %s (frame %s)", TABLE,
-                      PICK_OBJECT, frame)
-        rospy.Subscriber("joint_states", JointState, self._on_joint_states, queue_size=10)
-        timeout = self.settings.action_timeout
-        self.arm = actionlib.SimpleActionClient("arm_controller/follow_joint_trajectory",
-                                                FollowJointTrajectoryAction)
-        self.gripper = actionlib.SimpleActionClient("gripper_controller/follow_joint_trajectory",
-                                                    FollowJointTrajectoryAction)
-        for name, client in (("arm_controller", self.arm), ("gripper_controller", self.gripper)):
-            if not _server_within(client, timeout):
-                raise RuntimeError(
-                    f"no driver answers on {rospy.resolve_name(name)}/follow_joint_trajectory "
-                    f"after {timeout:.0f} s. A driver must provide "
-                    f"{rospy.resolve_name('joint_states')} (sensor_msgs/JointState of "
-                    f"{', '.join(ARM_JOINTS + FINGER_JOINTS)}) and the control_msgs/"
-                    "FollowJointTrajectory actions arm_controller/follow_joint_trajectory "
-                    "(the four arm joints) and gripper_controller/follow_joint_trajectory "
-                    "(the fingers) in this namespace; or start arm.launch with use_sim:=true")
-        self._wait_for_joint_states(timeout)
+        """Connects to move_group (waiting for it at most start_timeout wall seconds), fills
+        the planning scene, then offers the services."""
+        ns = rospy.get_namespace()
+        description = ns + "robot_description"
+        deadline = time.monotonic() + self.settings.start_timeout  # wall: paused sims
+        while not rospy.has_param(description):
+            if time.monotonic() > deadline or rospy.is_shutdown():
+                raise RuntimeError(f"no {description} after {self.settings.start_timeout:g} s:"
+                                   " start the arm (xsarm_moveit.launch) first")
+            time.sleep(SCENE_POLL)
+        wait = max(1.0, deadline - time.monotonic())
+        self.robot = moveit_commander.RobotCommander(robot_description=description, ns=ns)
+        self.arm = moveit_commander.MoveGroupCommander(
+            self.settings.arm_group, robot_description=description, ns=ns, wait_for_servers=wait)
+        self.gripper = moveit_commander.MoveGroupCommander(
+            self.settings.gripper_group, robot_description=description, ns=ns,
+            wait_for_servers=wait)
+        self.scene = moveit_commander.PlanningSceneInterface(ns=ns, synchronous=True)
+        for group in (self.arm, self.gripper):
+            group.set_planning_time(self.settings.planning_time)
+            group.set_max_velocity_scaling_factor(self.settings.velocity_scaling)
+            group.set_max_acceleration_scaling_factor(self.settings.acceleration_scaling)
+        self.tip = self.arm.get_end_effector_link()
+        self.fingers = self.robot.get_link_names(self.settings.gripper_group)
+        self.finger_values = {
+            gripper_open: self.gripper.get_named_target_values(state)
+            for gripper_open, state in ((True, self.settings.open_state),
+                                        (False, self.settings.closed_state))}
+        rospy.wait_for_service(ns + "compute_ik", timeout=wait)
+        self.ik = rospy.ServiceProxy(ns + "compute_ik", GetPositionIK)
+        self.validity = rospy.ServiceProxy(ns + "check_state_validity", GetStateValidity)
+        # ActionClient: rospy's SimpleActionClient may miss the end of a goal that is done
+        # within a millisecond (the gripper already where it is sent) and wait for ever
+        self.executor = actionlib.ActionClient(ns + "execute_trajectory",
+                                               ExecuteTrajectoryAction)
+        self._goal = None
+        if not self.executor.wait_for_server(rospy.Duration(wait)):
+            raise RuntimeError(f"move_group's {ns}execute_trajectory does not answer")
+        self._fill_scene()
         rospy.Service("reset", Reset, self._serve_reset)
         rospy.Service("step", Step, self._serve_step)
         rospy.Service("follow", Follow, self._serve_follow)
-        rospy.loginfo("mover: ready, %d waypoints loaded", len(self.waypoints))
+        rospy.loginfo("mover: ready (group %s, tip %s), %d waypoints loaded",
+                      self.settings.arm_group, self.tip, len(self.waypoints))
 
-    def _on_joint_states(self, message: JointState) -> None:
-        with self._state_lock:
-            self._positions.update(zip(message.name, message.position))
-            self._state_stamp = message.header.stamp
+    def _fill_scene(self) -> None:
+        """The table (its top table_clearance below the arm's base) and the block, as
+        config/scene.yaml has them; checks they arrived."""
+        frame, config = self.settings.frame, self.scene_config
+        table = np.add(config[TABLE]["center"], (0.0, 0.0, -float(config["table_clearance"])))
+        self.scene.add_box(TABLE, pose_stamped(frame, table), config[TABLE]["size"])
+        block = config[PICK_OBJECT]
+        self.scene.add_box(PICK_OBJECT, pose_stamped(frame, block["position"],
+                                                     yaw_quaternion(block.get("yaw", 0.0))),
+                           block["size"])
+        self._wait_for_scene(lambda: {TABLE, PICK_OBJECT} <=
+                             set(self.scene.get_known_object_names()), "the table and the block")
+        rospy.loginfo("mover: the planning scene has the %s and the %s", TABLE, PICK_OBJECT)
 
-    def _wait_for_fresh_state(self, since) -> None:
-        """After a motion: waits (briefly) for joint states stamped after it ended, so that
-        the next plan starts from where the arm is, not from where it was on its way."""
-        deadline = rospy.get_time() + 1.0
-        rate = rospy.Rate(100)
-        while not rospy.is_shutdown() and rospy.get_time() < deadline:
-            with self._state_lock:
-                if self._state_stamp is not None and self._state_stamp >= since:
-                    return
-            rate.sleep()
-        rospy.logwarn("mover: no joint states newer than the end of the last motion")
-
-    def _wait_for_joint_states(self, timeout: float) -> None:
-        deadline = time.monotonic() + timeout  # wall time: see _server_within
-        while not rospy.is_shutdown() and time.monotonic() < deadline:
-            if all(name in self._positions for name in ARM_JOINTS + FINGER_JOINTS):
-                return
-            time.sleep(POLL_PERIOD)
-        raise RuntimeError(f"no joint states for {', '.join(ARM_JOINTS + FINGER_JOINTS)} on "
-                           f"{rospy.resolve_name('joint_states')} after {timeout:.0f} s")
-
-    def current(self):
-        with self._state_lock:
-            arm = np.array([self._positions[name] for name in ARM_JOINTS])
-            finger = float(np.mean([self._positions[name] for name in FINGER_JOINTS]))
-        return arm, finger
+    def _wait_for_scene(self, condition, what: str) -> None:
+        """Waits (a few wall seconds at most) for move_group's scene to show a change: the
+        topics that carry it are asynchronous, as MoveIt's tutorial says."""
+        deadline = time.monotonic() + 5.0
+        while not condition():
+            if time.monotonic() > deadline:
+                raise RuntimeError(f"the planning scene did not show {what}")
+            time.sleep(SCENE_POLL)
 
     # --- services ------------------------------------------------------------------------
     def _serve(self, handler, response_class, request, stops_cycle: bool):
@@ -243,65 +252,50 @@ class Mover:
     # --- reset ---------------------------------------------------------------------------
     def _reset(self, request):
         pose = request.box_pose
-        position = np.array([pose.position.x, pose.position.y, pose.position.z])
-        if not np.all(np.isfinite(position)):
+        position = [pose.position.x, pose.position.y, pose.position.z]
+        if not all(math.isfinite(v) for v in position):
             raise Outcome(Codes.INVALID_GOAL_CONSTRAINTS,
-                          f"reset: box position {position.tolist()} is not finite")
+                          f"reset: box position {position} is not finite; nothing moved")
         o = pose.orientation
         try:
             orientation = unit_quaternion(o.x, o.y, o.z, o.w)
         except ValueError as error:
-            raise Outcome(Codes.INVALID_GOAL_CONSTRAINTS, f"reset: box {error}") from None
-        size = self.scene_config[REALSENSE_BOX]["size"]
-        box = Box(REALSENSE_BOX, position, orientation, size)
-        arm, finger = self.current()
-        trial = empty_scene(self.scene_config)
-        for other in self.scene.boxes.values():
-            if other.name != REALSENSE_BOX:
-                trial.add(other)
-        if self.scene.attached is not None:  # reset opens the gripper: it lets go
-            trial.add(self._held_box(arm))
-        self._check_placement(box, trial, pose)
-        trial.add(box)
-        plan = self.planner.plan_to_joints(arm, self.k.finger_max, self.k.named_poses["home"],
-                                           trial)
-        if plan.code == Codes.START_STATE_IN_COLLISION:
-            plan = Plan(plan.code, f"{plan.message} with the box there; the box was not moved")
-        self._require(plan, "reset")
-        self.scene = trial
-        self._publish_scene()
-        self._place_in_simulation(position, pose.orientation)
-        self._execute_gripper(self.k.finger_max)
-        self._execute(plan)
+            raise Outcome(Codes.INVALID_GOAL_CONSTRAINTS,
+                          f"reset: box {error}; nothing moved") from None
+        block = self.scene_config[PICK_OBJECT]
+        others = {} if self.holding else {
+            PICK_OBJECT: (self._object_position(PICK_OBJECT), block["size"])}
+        problem = placement_problem(self.scene_config, position, orientation, others)
+        if problem is not None:
+            where = (f"box pose (position {np.round(position, 4).tolist()}, orientation "
+                     f"{np.round(orientation, 4).tolist()})")
+            if problem == "floor":
+                raise Outcome(Codes.INVALID_GOAL_CONSTRAINTS,
+                              f"reset: the {where} reaches below the floor (z {self.floor:g} "
+                              f"in {self.settings.frame}); the box was not moved, nothing moved")
+            raise Outcome(Codes.GOAL_IN_COLLISION, f"reset: the {where} is inside the "
+                          f"{problem}; the box was not moved, nothing moved")
+        self.scene.add_box(REALSENSE_BOX, pose_stamped(self.settings.frame, position, orientation),
+                           self.scene_config[REALSENSE_BOX]["size"])
+        self._wait_for_scene(lambda: REALSENSE_BOX in self.scene.get_known_object_names(),
+                             "the RealSense box")
+        self._place_in_simulation(position, orientation)
+        self._move_gripper(True)
+        self.arm.set_named_target("Home")
+        self._plan_and_execute(self.arm, "reset: Home")
         if request.clear_waypoints:
             self.waypoints = []
             rospy.set_param("~waypoints", [])
-        return Codes.SUCCESS, (f"reset: box at {position.round(3).tolist()}, arm at Home"
+        return Codes.SUCCESS, (f"reset: box at {np.round(position, 3).tolist()}, arm at Home"
                                f"{', waypoints cleared' if request.clear_waypoints else ''}")
 
-    def _check_placement(self, box: Box, scene, pose) -> None:
-        """Refuses a box pose below the floor or inside an obstacle of ``scene`` (the table,
-        the block): the planner would believe it there while physics threw the simulated
-        box out onto the floor. Resting on the table is fine (it may sink in by the held
-        object's contact tolerance, as a set-down block may)."""
-        hit = scene.placement_conflict(box, self.planner.model.contact_tolerance)
-        if hit is None:
-            return
-        o = pose.orientation
-        where = (f"box pose (position {np.round(box.center, 4).tolist()}, orientation "
-                 f"{np.round([o.x, o.y, o.z, o.w], 4).tolist()})")
-        if hit == "floor":
-            raise Outcome(Codes.INVALID_GOAL_CONSTRAINTS,
-                          f"reset: the {where} reaches below the floor (z "
-                          f"{scene.floor_z:g} in {self.settings.planning_frame}); the box was "
-                          "not moved, nothing moved")
-        raise Outcome(Codes.GOAL_IN_COLLISION,
-                      f"reset: the {where} is inside the {hit}; the box was not moved, "
-                      "nothing moved")
+    def _object_position(self, name: str) -> Sequence[float]:
+        p = self.scene.get_object_poses([name])[name].position
+        return (p.x, p.y, p.z)
 
     def _place_in_simulation(self, position, orientation) -> None:
-        """Moves the simulated box too, when a simulator answers (not on the fake or the
-        real robot): its pose in the world is the arm's base frame raised by the table."""
+        """Moves the simulated box too, when a simulator answers (not with fake controllers
+        or the real arm): the world's frame is the arm's (worlds/arm_box.world)."""
         try:
             from gazebo_msgs.msg import ModelState
             from gazebo_msgs.srv import SetModelState
@@ -309,9 +303,7 @@ class Mover:
         except (ImportError, rospy.ROSException):
             return
         state = ModelState(model_name=REALSENSE_BOX, reference_frame="world")
-        state.pose.position.x, state.pose.position.y = position[0], position[1]
-        state.pose.position.z = position[2] + float(self.scene_config["table_height"])
-        state.pose.orientation = orientation
+        state.pose = pose_stamped("world", position, orientation).pose
         answer = rospy.ServiceProxy("/gazebo/set_model_state", SetModelState)(state)
         if not answer.success:
             rospy.logwarn("mover: the simulator did not move the box: %s", answer.status_message)
@@ -319,95 +311,163 @@ class Mover:
     # --- step ----------------------------------------------------------------------------
     def _step(self, request):
         target = (request.position.x, request.position.y, request.position.z)
-        plan, grasps = self.move_to(target, request.gripper_open, "step")
-        rospy.loginfo("mover: step %s", plan.message)
         try:
-            self._execute(plan)
-            self._execute_gripper(self._finger_for(request.gripper_open))
-            self._grasp_or_release(plan.path[-1], request.gripper_open, grasps)
+            described = self._go_to(target, request.gripper_open, "step")
         except Outcome as outcome:
-            # the waypoint is stored only once the motion is done: a failed step leaves the
-            # list as it was (the arm may have moved part of the way)
-            raise Outcome(outcome.code, f"step: {outcome.message}; no waypoint stored") from None
-        waypoint = [float(v) for v in target] + [bool(request.gripper_open)]
-        self.waypoints.append(waypoint)
+            raise Outcome(outcome.code, f"{outcome.message}; no waypoint stored") from None
+        self.waypoints.append([float(v) for v in target] + [bool(request.gripper_open)])
         rospy.set_param("~waypoints", self.waypoints)
         return Codes.SUCCESS, (f"step: gripper at {np.round(target, 3).tolist()}, "
                                f"{'open' if request.gripper_open else 'closed'}; waypoint "
-                               f"{len(self.waypoints)} stored (planned in "
-                               f"{1000 * plan.planning_seconds:.0f} ms: {plan.message})")
+                               f"{len(self.waypoints)} stored ({described})")
 
-    def _finger_for(self, gripper_open: bool) -> float:
-        return self.k.finger_max if gripper_open else self.k.finger_min
-
-    def move_to(self, target, gripper_open: bool, what: str):
-        """Plans to a target: the plan, and whether closing the gripper there grasps the
-        block; Outcome when it cannot be done (nothing has moved)."""
-        arm, finger = self.current()
-        block = self.scene.boxes.get(PICK_OBJECT)
-        # approaching the block to grasp it, or leaving it after letting go, the gripper may
-        # touch it (MoveIt's pick and place allow the end effector's touch links that on
-        # approach and retreat); elsewhere it is an obstacle like any other
-        self.scene.touch_allowed = PICK_OBJECT if block is not None and any(
-            fingers_around(block, point, self.k.finger_max, self.finger_length)
-            for point in (target, self.k.gripper_point(arm))) else None
-        plan = self.planner.plan_to_position(arm, finger, target, self.scene)
-        self._require(plan, what)
-        # the gripper opens or closes at the target: that must be free as well, except that
-        # closing it around the block is a grasp
-        goal, opening = plan.path[-1], self._finger_for(gripper_open)
-        hit = self.planner.model.collision(goal, opening, self.scene)
-        grasps = not gripper_open and self.scene.touch_allowed == PICK_OBJECT and \
-            self._grasps(goal, opening)
-        if hit and not grasps:
-            raise Outcome(Codes.GOAL_IN_COLLISION, f"{what}: {'opening' if gripper_open else 'closing'}"
-                          f" the gripper at the target would touch {hit}")
-        self._publish_path(plan)
-        return plan, grasps
-
-    def _grasps(self, q, opening: float) -> bool:
-        """Whether closing the gripper at q closes it on the block: the block's centre lies
-        between the fingers, and the closed fingers would touch it."""
-        block = self.scene.boxes.get(PICK_OBJECT)
-        if block is None or self.scene.attached is not None:
-            return False
-        origin, axes = self.planner.model.hand_frames(np.asarray(q)[None])
-        if abs(float((block.center - origin[0]) @ axes[0][:, 1])) >= self.k.finger_max:
-            return False
-        alone = empty_scene(self.scene_config)
-        alone.add(block)
-        return self.planner.model.collision(q, opening, alone) == PICK_OBJECT
-
-    def _held_box(self, q) -> Box:
-        """The attached block as a scene box where the hand at q holds it."""
-        attached = self.scene.attached
-        centre, rotation = self.planner.model.attached_pose(attached, q)
-        matrix = np.eye(4)
-        matrix[:3, :3] = rotation
-        return Box(attached.name, centre, tuple(tft.quaternion_from_matrix(matrix)),
-                   attached.size)
-
-    def _grasp_or_release(self, q, gripper_open: bool, grasps: bool) -> None:
-        """After the gripper moved at q: a grasp attaches the block to the hand (MoveIt's
-        attachObject); opening the gripper detaches a held block where it is."""
+    def _go_to(self, target, gripper_open: bool, what: str) -> str:
+        """Moves the gripper point to ``target``, then opens or closes the gripper; what was
+        chosen. Outcome when it cannot (nothing has moved when planning failed)."""
+        if not all(math.isfinite(v) for v in target):
+            raise Outcome(Codes.INVALID_GOAL_CONSTRAINTS,
+                          f"{what}: target {list(target)} is not a finite position; nothing moved")
+        if target[2] < self.floor:
+            raise Outcome(Codes.INVALID_GOAL_CONSTRAINTS,
+                          f"{what}: target {np.round(target, 3).tolist()} is below the floor "
+                          f"(z {self.floor:g} in {self.settings.frame}); nothing moved")
+        joints, pitch = self._reaching_joints(target, what)
+        grasps = not gripper_open and not self.holding and self._between_fingers(target)
+        self._check_gripper_at(joints, gripper_open, grasps, what)
+        self.arm.set_joint_value_target(joints)
+        planned = self._plan_and_execute(self.arm, what)
         if grasps:
-            block = self.scene.boxes[PICK_OBJECT]
-            self.scene.remove(PICK_OBJECT)
-            self.scene.attached = self.planner.model.attach(PICK_OBJECT, block, q)
-            rospy.loginfo("mover: %s attached to the gripper", PICK_OBJECT)
-        elif gripper_open and self.scene.attached is not None:
-            box = self._held_box(q)
-            self.scene.attached = None
-            self.scene.add(box)
-            rospy.loginfo("mover: %s detached at %s", box.name, np.round(box.center, 3).tolist())
-        else:
-            return
-        self._publish_scene()
+            self._attach_block()
+        self._move_gripper(gripper_open)
+        if gripper_open and self.holding:
+            self._detach_block()
+        return (f"gripper pitch {math.degrees(pitch):.0f} deg, waist facing the target, joints "
+                f"{np.round(list(joints.values()), 3).tolist()}; {planned}")
 
-    @staticmethod
-    def _require(plan: Plan, what: str) -> None:
-        if not plan.ok:
-            raise Outcome(plan.code, f"{what}: {plan.message}; nothing moved")
+    def _reaching_joints(self, target, what: str) -> Tuple[Dict[str, float], float]:
+        """The arm's joints putting the gripper point at ``target`` facing it, free of
+        collisions, and the pitch; Outcome NO_IK_SOLUTION or GOAL_IN_COLLISION."""
+        bearing = math.atan2(target[1], target[0])
+        for pitch in self.pitches:
+            solution = self._ik(target, pitch, bearing, avoid_collisions=True)
+            if solution is not None:
+                return solution, pitch
+        for pitch in self.pitches:      # reachable, but touching something at every pitch?
+            solution = self._ik(target, pitch, bearing, avoid_collisions=False)
+            if solution is not None:
+                touched = self._contacts(solution)
+                raise Outcome(Codes.GOAL_IN_COLLISION,
+                              f"{what}: the gripper at {np.round(target, 3).tolist()} would "
+                              f"touch {touched or 'something'} at every pitch; nothing moved")
+        raise Outcome(Codes.NO_IK_SOLUTION,
+                      f"{what}: {np.round(target, 3).tolist()} is out of reach (no IK solution "
+                      f"at any gripper pitch from {self.settings.pitch_range_degrees[0]:g} to "
+                      f"{self.settings.pitch_range_degrees[1]:g} deg); nothing moved")
+
+    def _ik(self, target, pitch: float, bearing: float,
+            avoid_collisions: bool) -> Optional[Dict[str, float]]:
+        request = GetPositionIKRequest()
+        ik = request.ik_request
+        ik.group_name = self.settings.arm_group
+        ik.ik_link_name = self.tip
+        ik.avoid_collisions = avoid_collisions
+        ik.timeout = rospy.Duration(self.settings.ik_timeout)
+        ik.robot_state = self.robot.get_current_state()
+        ik.pose_stamped = pose_stamped(self.settings.frame, target,
+                                       tft.quaternion_from_euler(0.0, pitch, bearing))
+        answer = self.ik(request)
+        if answer.error_code.val != Codes.SUCCESS:
+            return None
+        state = answer.solution.joint_state
+        arm_joints = set(self.arm.get_active_joints())
+        return {n: p for n, p in zip(state.name, state.position) if n in arm_joints}
+
+    def _state(self, joints: Dict[str, float], gripper_open: Optional[bool] = None) -> RobotState:
+        values = dict(joints)
+        if gripper_open is not None:
+            values.update(self.finger_values[gripper_open])
+        state = RobotState(is_diff=True)
+        state.joint_state = JointState(name=list(values), position=list(values.values()))
+        return state
+
+    def _contacts(self, joints: Dict[str, float], gripper_open: Optional[bool] = None,
+                  allowed: Sequence[str] = ()) -> List[str]:
+        """What the robot at ``joints`` touches (move_group's check_state_validity), each
+        pair once, leaving out pairs with a body of ``allowed``."""
+        answer = self.validity(GetStateValidityRequest(
+            robot_state=self._state(joints, gripper_open)))
+        found = []
+        for contact in answer.contacts:
+            pair = f"{contact.contact_body_1} and {contact.contact_body_2}"
+            if pair not in found and not {contact.contact_body_1, contact.contact_body_2} & \
+                    set(allowed):
+                found.append(pair)
+        return found
+
+    def _between_fingers(self, target) -> bool:
+        """Whether the block stands between the fingers with the gripper point at
+        ``target``: its centre within half its width of it across, and within its height
+        of it up or down (the fingertips reach below the gripper point)."""
+        if PICK_OBJECT not in self.scene.get_known_object_names():
+            return False
+        offset = np.abs(np.subtract(self._object_position(PICK_OBJECT), target))
+        size = np.asarray(self.scene_config[PICK_OBJECT]["size"], dtype=float)
+        return bool(np.all(offset[:2] < size[:2] / 2) and offset[2] < size[2])
+
+    def _check_gripper_at(self, joints, gripper_open: bool, grasps: bool, what: str) -> None:
+        """Opening or closing the gripper at the target must be free as well (closing it
+        around the block is a grasp): checked before anything moves."""
+        touched = self._contacts(joints, gripper_open, allowed=[PICK_OBJECT] if grasps else [])
+        if touched:
+            raise Outcome(Codes.GOAL_IN_COLLISION,
+                          f"{what}: {'opening' if gripper_open else 'closing'} the gripper at "
+                          f"the target would touch {', '.join(touched)}; nothing moved")
+
+    def _attach_block(self) -> None:
+        self.arm.attach_object(PICK_OBJECT, self.tip, touch_links=self.fingers)
+        self._wait_for_scene(lambda: PICK_OBJECT in self.scene.get_attached_objects(),
+                             "the block attached")
+        self.holding = True
+        rospy.loginfo("mover: %s attached to %s", PICK_OBJECT, self.tip)
+
+    def _detach_block(self) -> None:
+        self.arm.detach_object(PICK_OBJECT)
+        self._wait_for_scene(lambda: PICK_OBJECT not in self.scene.get_attached_objects(),
+                             "the block detached")
+        self.holding = False
+        p = self._object_position(PICK_OBJECT)
+        rospy.loginfo("mover: %s detached at %s", PICK_OBJECT, np.round(p, 3).tolist())
+
+    def _move_gripper(self, gripper_open: bool) -> None:
+        self.gripper.set_named_target(self.settings.open_state if gripper_open
+                                      else self.settings.closed_state)
+        self._plan_and_execute(self.gripper, "the gripper")
+
+    # --- planning and execution ----------------------------------------------------------
+    def _plan_and_execute(self, group, what: str) -> str:
+        """move_group's plan to the group's target, executed through execute_trajectory;
+        how long each took. Outcome with move_group's code when either fails."""
+        group.set_start_state_to_current_state()
+        success, trajectory, planning_time, error = group.plan()
+        if not success:
+            raise Outcome(error.val, f"{what}: move_group could not plan ({code_name(error.val)});"
+                                     " nothing moved")
+        goal = self._goal = self.executor.send_goal(ExecuteTrajectoryGoal(trajectory=trajectory))
+        deadline = rospy.get_time() + self.settings.execution_timeout
+        while goal.get_comm_state() != CommState.DONE:
+            if rospy.get_time() > deadline or rospy.is_shutdown():
+                goal.cancel()
+                raise Outcome(Codes.TIMED_OUT, f"{what}: the motion was not done within "
+                                               f"{self.settings.execution_timeout:g} s")
+            time.sleep(RESULT_POLL)
+        result = goal.get_result()
+        code = result.error_code.val if result is not None else Codes.PREEMPTED
+        if code != Codes.SUCCESS:
+            raise Outcome(code, f"{what}: execution failed ({code_name(code)}: "
+                                f"{goal.get_goal_status_text()})")
+        points = trajectory.joint_trajectory.points
+        duration = points[-1].time_from_start.to_sec() if points else 0.0
+        return f"planned in {1000 * planning_time:.0f} ms, moved for {duration:.2f} s"
 
     # --- follow --------------------------------------------------------------------------
     def _follow(self, request):
@@ -429,13 +489,10 @@ class Mover:
             if self._stop_cycle.is_set():
                 raise Outcome(Codes.PREEMPTED, "follow: stopped")
             try:
-                plan, grasps = self.move_to((x, y, z), gripper_open,
-                                            f"follow, waypoint {index + 1}")
+                self._go_to((x, y, z), gripper_open, f"follow, waypoint {index + 1}")
             except Outcome as outcome:
-                raise Outcome(outcome.code, outcome.message.replace("; nothing moved", "")) from None
-            self._execute(plan)
-            self._execute_gripper(self._finger_for(gripper_open))
-            self._grasp_or_release(plan.path[-1], gripper_open, grasps)
+                raise Outcome(outcome.code, outcome.message.replace("; nothing moved", "")) \
+                    from None
 
     def _repeat(self, waypoints) -> None:
         with self._busy:
@@ -443,86 +500,38 @@ class Mover:
                 try:
                     self._go_through(waypoints)
                 except Outcome as outcome:
-                    if outcome.code != Codes.PREEMPTED:
+                    if not self._stop_cycle.is_set():
                         rospy.logwarn("mover: the repeating follow stopped: %s", outcome.message)
                     return
 
     def _end_cycle(self) -> None:
         if self._cycle is not None and self._cycle.is_alive():
             self._stop_cycle.set()
-            self.arm.cancel_all_goals()
-            self.gripper.cancel_all_goals()
-            self._cycle.join(timeout=self.settings.action_timeout)
+            if self._goal is not None:
+                self._goal.cancel()
+            self._cycle.join(timeout=self.settings.execution_timeout)
         self._cycle = None
         self._stop_cycle.clear()
 
-    # --- execution -----------------------------------------------------------------------
-    def _execute(self, plan: Plan) -> None:
-        trajectory = JointTrajectory(joint_names=list(ARM_JOINTS))
-        for t, p, v in zip(plan.times, plan.positions, plan.velocities):
-            trajectory.points.append(JointTrajectoryPoint(
-                positions=[float(x) for x in p], velocities=[float(x) for x in v],
-                time_from_start=rospy.Duration(t)))
-        self._run(self.arm, trajectory, "the arm")
 
-    def _execute_gripper(self, opening: float) -> None:
-        _, finger = self.current()
-        duration = max(0.2, abs(opening - finger) / self.k.finger_speed)
-        trajectory = JointTrajectory(joint_names=list(FINGER_JOINTS))
-        trajectory.points.append(JointTrajectoryPoint(positions=[opening, opening],
-                                                      velocities=[0.0, 0.0],
-                                                      time_from_start=rospy.Duration(duration)))
-        self._run(self.gripper, trajectory, "the gripper")
-
-    def _run(self, client, trajectory: JointTrajectory, what: str) -> None:
-        if self._stop_cycle.is_set():
-            raise Outcome(Codes.PREEMPTED, "stopped")
-        goal = FollowJointTrajectoryGoal(trajectory=trajectory)
-        duration = trajectory.points[-1].time_from_start.to_sec()
-        client.send_goal(goal)
-        if not client.wait_for_result(rospy.Duration(duration + self.settings.execution_margin)):
-            client.cancel_goal()
-            raise Outcome(Codes.TIMED_OUT, f"{what} did not finish its motion within "
-                          f"{duration + self.settings.execution_margin:.1f} s")
-        if self._stop_cycle.is_set():
-            raise Outcome(Codes.PREEMPTED, "stopped")
-        self._wait_for_fresh_state(rospy.Time.now())
-        result = client.get_result()
-        if result is None or result.error_code != 0:
-            detail = result.error_string if result is not None else "no result"
-            raise Outcome(Codes.CONTROL_FAILED, f"{what}'s controller failed: {detail}")
-
-    # --- markers -------------------------------------------------------------------------
-    def _publish_scene(self) -> None:
-        held = []
-        if self.scene.attached is not None and self._positions:
-            held = [self._held_box(self.current()[0])]
-        self._scene_topic.publish(scene_markers(self.scene, self.settings.planning_frame,
-                                                rospy.Time.now(), held))
-
-    def _publish_path(self, plan: Plan) -> None:
-        points = [self.k.gripper_point(q) for q in plan.positions]
-        self._path_topic.publish(path_marker(points, self.settings.planning_frame,
-                                             rospy.Time.now()))
+def _read_yaml(path: str):
+    with open(path, encoding="utf-8") as stream:
+        return yaml.safe_load(stream)
 
 
 def main(argv=None) -> None:
+    moveit_commander.roscpp_initialize(argv if argv is not None else sys.argv)
     rospy.init_node("mover", argv=argv)
     package = rospkg.RosPack().get_path("arm_move")
     try:
-        values = _read_yaml(os.path.join(package, "config", "mover.yaml"))
-        values.update(rospy.get_param("~", {}))
-        # every setting named as the private parameter it is (the yaml's are loaded as such)
-        settings = settings_from(MoverSettings, values, "~")
-        robot = _read_yaml(settings.robot_config
-                           or os.path.join(package, "config", "px100.yaml"))
+        settings = read(MoverSettings, prefix="~",
+                        defaults=_read_yaml(os.path.join(package, "config", "mover.yaml")))
         scene_config = _read_yaml(settings.scene_config
                                   or os.path.join(package, "config", "scene.yaml"))
-        waypoints = parse_waypoints(rospy.get_param("~waypoints", None))
-        planner = planner_from_config(robot, values, "~")
-        mover = Mover(settings, planner, scene_config, waypoints)
+        mover = Mover(settings, scene_config)
         mover.start()
-    except (ValueError, KeyError, OSError, RuntimeError) as error:
+    except (ValueError, KeyError, OSError, RuntimeError, rospy.ROSException) as error:
         rospy.logfatal("mover: %s", error)
         sys.exit(1)
     rospy.spin()
+    moveit_commander.roscpp_shutdown()

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""rostest node for bad_input.test (fake backend): NaN in a step target, a zero-length
+"""rostest node for bad_input.test (fake MoveIt): NaN in a step target, a zero-length
 quaternion in reset, follow with no waypoints, a target inside the RealSense box, one out
 of reach, and a second request while one runs. Each answer names the cause; nothing
 moves; the waypoint list is unchanged; afterwards a good step still works."""
@@ -12,9 +12,10 @@ import rostest
 from geometry_msgs.msg import Point, Pose, Quaternion
 from sensor_msgs.msg import JointState
 
-from arm_move.kinematics import ARM_JOINTS, FINGER_JOINTS
-from arm_move.msg import MoveItErrorCodes as Codes
+from moveit_msgs.msg import MoveItErrorCodes as Codes
+
 from arm_move.srv import Follow, Reset, Step
+from arm_truth import ARM_JOINTS, FINGERS as FINGER_JOINTS
 from sim_bridge.testing import wait_until
 
 BOX_ON_TABLE = Pose(Point(0.16, -0.17, 0.025), Quaternion(0, 0, 0, 1))
@@ -51,7 +52,7 @@ class BadInput(unittest.TestCase):
             self.assertIn(word, answer.message)
 
     def assert_nothing_changed(self, before):
-        # ten more joint states (0.2 s at the fake executor's 50 Hz): a motion would show
+        # ten more joint states (0.1 s at the fake controllers' 100 Hz): a motion would show
         count = self.received[0]
         wait_until(lambda: self.received[0] >= count + 10, "ten more joint states")
         np.testing.assert_allclose(self.state(), before, atol=1e-9)

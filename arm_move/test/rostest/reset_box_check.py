@@ -11,11 +11,11 @@ import rostest
 from geometry_msgs.msg import Point, Pose, Quaternion
 from gazebo_msgs.srv import GetModelState
 
-from arm_move.msg import MoveItErrorCodes as Codes
+from moveit_msgs.msg import MoveItErrorCodes as Codes
+
 from arm_move.srv import Reset
 from sim_bridge.testing import service_proxy, wait_until
 
-TABLE_HEIGHT = 0.75            # config/scene.yaml: the arm's base frame is this far up
 BOX = "realsense_box"
 IN_THE_TABLE = Pose(Point(0.16, -0.17, -0.1), Quaternion(0, 0, 0, 1))
 BELOW_THE_FLOOR = Pose(Point(0.9, 0.0, -0.76), Quaternion(0, 0, 0, 1))
@@ -62,8 +62,7 @@ class ResetBox(unittest.TestCase):
     def test_3_a_good_reset_still_places_the_box(self):
         answer = self.reset(ON_THE_TABLE, True)
         self.assertEqual(answer.error_code.val, Codes.SUCCESS, answer.message)
-        goal = (ON_THE_TABLE.position.x, ON_THE_TABLE.position.y,
-                ON_THE_TABLE.position.z + TABLE_HEIGHT)
+        goal = (ON_THE_TABLE.position.x, ON_THE_TABLE.position.y, ON_THE_TABLE.position.z)
         wait_until(lambda: math.dist(goal, (lambda p: (p.x, p.y, p.z))(self.box())) < PLACED,
                    f"the simulated box within {PLACED} m of {goal}")
 

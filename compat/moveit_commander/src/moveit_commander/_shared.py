@@ -8,6 +8,7 @@ import time
 from typing import Dict, Tuple
 
 import rospy
+from actionlib.action_client import CommState
 from sensor_msgs.msg import JointState
 
 from moveit_commander.exception import MoveItCommanderException
@@ -123,3 +124,17 @@ def solver(shared: Robot, group: str):
 
 def error(message: str) -> MoveItCommanderException:
     return MoveItCommanderException(message)
+
+
+RESULT_POLL = 0.002      # wall s between looks at a goal's state
+
+
+def result_of(handle):
+    """The result of the goal whose ClientGoalHandle is ``handle``, waiting until it comes
+    or ROS shuts down. Not SimpleActionClient's wait_for_result: a server that answers
+    within a millisecond (a plan of one point) may deliver the goal's transitions before
+    send_goal has stored its handle; rospy's simple client then drops them ("Got a
+    transition callback on a goal handle that we're not tracking") and waits for ever."""
+    while not rospy.is_shutdown() and handle.get_comm_state() != CommState.DONE:
+        time.sleep(RESULT_POLL)
+    return handle.get_result()

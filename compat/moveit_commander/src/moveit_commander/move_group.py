@@ -60,9 +60,12 @@ class MoveGroupCommander:
         self._group = _shared.group_or_raise(self._robot, name)
         self._name, self._ns = name, ns
         self._clients = {}
+        self._goal = None      # the handle of the last goal sent (kept: rospy drops its
+                               # state machine when the handle is collected)
         deadline = time.monotonic() + wait_for_servers if wait_for_servers > 0 else None
         for action, kind in ACTIONS:   # one deadline for the four, as MoveIt's
-            client = actionlib.SimpleActionClient(_shared._name(ns, action), kind)
+            # ActionClient, not SimpleActionClient: see _shared.result_of
+            client = actionlib.ActionClient(_shared._name(ns, action), kind)
             if deadline is None:
                 connected = client.wait_for_server()
             else:   # (a zero Duration would wait for ever)
@@ -569,12 +572,10 @@ class MoveGroupCommander:
         goal.planning_options.replan = self._replan
         goal.planning_options.planning_scene_diff.is_diff = True
         goal.planning_options.planning_scene_diff.robot_state.is_diff = True
-        client = self._clients["move_group"]
-        client.send_goal(goal)
+        self._goal = self._clients["move_group"].send_goal(goal)
         if not wait:
             return None
-        client.wait_for_result()
-        return client.get_result()
+        return _shared.result_of(self._goal)
 
     def go(self, joints=None, wait: bool = True) -> bool:
         """Plans to the target (or ``joints``: a joint target, a Pose, a remembered name)
@@ -640,12 +641,11 @@ class MoveGroupCommander:
     def execute(self, plan_msg, wait: bool = True) -> bool:
         if isinstance(plan_msg, JointTrajectory):
             plan_msg = RobotTrajectory(joint_trajectory=plan_msg)
-        client = self._clients["execute_trajectory"]
-        client.send_goal(ExecuteTrajectoryGoal(trajectory=plan_msg))
+        self._goal = self._clients["execute_trajectory"].send_goal(
+            ExecuteTrajectoryGoal(trajectory=plan_msg))
         if not wait:
             return True
-        client.wait_for_result()
-        result = client.get_result()
+        result = _shared.result_of(self._goal)
         return result is not None and result.error_code.val == MoveItErrorCodes.SUCCESS
 
     def stop(self) -> None:

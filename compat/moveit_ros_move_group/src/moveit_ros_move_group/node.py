@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import sys
 import threading
+import traceback
 from typing import Dict, List
 
 import actionlib
@@ -237,8 +238,18 @@ def main() -> int:
 def _run(server, handler) -> None:
     """Accepts the new goal (preempting a running one, as SimpleActionServer does) and runs
     it in a thread of its own, so that a stop or a second goal is heard meanwhile."""
-    goal = server.accept_new_goal()
-    threading.Thread(target=handler, args=(goal, server.current_goal), daemon=True).start()
+    goal, handle = server.accept_new_goal(), server.current_goal
+
+    def guarded():
+        # a fault of ours must end the goal, not leave the client waiting for ever
+        try:
+            handler(goal, handle)
+        except Exception as error:  # pylint: disable=broad-except
+            rospy.logerr("move_group: %s failed: %s\n%s", server.action_server.ns, error,
+                         traceback.format_exc())
+            if server.current_goal == handle and server.is_active():
+                server.set_aborted(None, f"move_group failed: {type(error).__name__}: {error}")
+    threading.Thread(target=guarded, daemon=True).start()
 
 
 def _finish(server, handle, code: int, result, text: str) -> None:

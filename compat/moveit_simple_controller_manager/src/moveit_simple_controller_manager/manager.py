@@ -8,11 +8,11 @@ server does not answer within ``trajectory_execution/controller_connection_timeo
 ``command_joint`` (its first joint) with ``max_effort``."""
 from __future__ import annotations
 
-import threading
 from dataclasses import dataclass
 from typing import Dict, List, Sequence
 
 import actionlib
+from actionlib.action_client import CommState
 import rospy
 from actionlib_msgs.msg import GoalStatus
 from control_msgs.msg import (FollowJointTrajectoryAction, FollowJointTrajectoryGoal,
@@ -35,20 +35,24 @@ class SimpleController:
 
 
 class Run:
-    def __init__(self, client):
-        self.client = client
-        self.succeeded = False
-        self._done = threading.Event()
+    """One goal sent to a controller. Its state is read from the goal's handle: rospy's
+    SimpleActionClient drops the transitions of a goal that ends within a millisecond (a
+    gripper already where it is sent) when they come before send_goal has stored the
+    handle, and its done callback never came: the execution waited for ever."""
 
-    def finished(self, state, _result) -> None:
-        self.succeeded = state == GoalStatus.SUCCEEDED
-        self._done.set()
+    def __init__(self, handle):
+        self.handle = handle
 
     def done(self) -> bool:
-        return self._done.is_set()
+        return self.handle.get_comm_state() == CommState.DONE
+
+    @property
+    def succeeded(self) -> bool:
+        return self.done() and self.handle.get_goal_status() == GoalStatus.SUCCEEDED
 
     def stop(self) -> None:
-        self.client.cancel_goal()
+        if not self.done():
+            self.handle.cancel()
 
 
 class SimpleControllerManager:
@@ -69,7 +73,7 @@ class SimpleControllerManager:
                 continue
             action = f"{entry['name']}/{entry['action_ns']}" if entry["action_ns"] \
                 else str(entry["name"])
-            client = actionlib.SimpleActionClient(action, TYPES[kind])
+            client = actionlib.ActionClient(action, TYPES[kind])
             if not client.wait_for_server(rospy.Duration(connection_timeout)):
                 rospy.logerr("controller '%s': no action server '%s' answered within %.0f s: "
                              "left out", entry["name"], rospy.resolve_name(action),
@@ -85,7 +89,6 @@ class SimpleControllerManager:
 
     def start(self, name: str, joints: Sequence[str], trajectory) -> Run:
         controller = self.controllers[name]
-        run = Run(controller.client)
         if controller.kind == "FollowJointTrajectory":
             goal = FollowJointTrajectoryGoal(trajectory=trajectory)
         else:
@@ -94,5 +97,4 @@ class SimpleControllerManager:
             goal.command.position = last[list(joints).index(controller.command_joint)] \
                 if controller.command_joint in joints else last[0]
             goal.command.max_effort = controller.max_effort
-        controller.client.send_goal(goal, done_cb=run.finished)
-        return run
+        return Run(controller.client.send_goal(goal))
