@@ -34,9 +34,6 @@ The scene (tools/bench/): a closed hall with 40 static objects and an RB1-class 
                                 BENCH_SOAK_MINUTES (default 10; 0 leaves it out): driving
                                 back and forth and /rotate_robot calls; the simulator's RSS
                                 growth after the first minute, and the calls that failed
-  planning time                 arm_move's planner on 200 random reachable, collision-free
-                                targets in the table scene, each from where the last
-                                ended (the unit test's targets): median and 95th percentile
   MoveIt                        tools/bench/moveit_cost.py: move_group (xsarm_moveit.launch,
                                 fake controllers) up after roslaunch; plan_kinematic_path
                                 for 200 random reachable pose targets in the table scene
@@ -71,7 +68,6 @@ RVIZ_TOPICS = ("/tf", "/odom", "/scan", "/gazebo/model_states")
 CAMERA_TOPICS = ("/front_camera/image_raw", "/kinect/depth/image_raw", "/kinect/points")
 SOAK_MINUTES = float(os.environ.get("BENCH_SOAK_MINUTES", "10"))
 SOAK_WARM_UP = 60.0  # s of the soak before the RSS it grows from is read
-PLANNING_TARGETS = 200
 TARGETS = {
     "max real-time factor, ROS, 1 ms step": (">=", 20.0),
     "max real-time factor, ROS, 1/240 s step": (">=", 40.0),
@@ -86,7 +82,6 @@ TARGETS = {
     "fixed cost per scan, 1 beam (ms)": ("<=", 0.2),
     "soak: RSS growth (MB)": ("<", 5.0),
     "soak: failed calls": ("<=", 0.0),
-    "arm planning, median (ms)": ("<=", 50.0),
     "move_group up after roslaunch (s)": ("<=", 3.0),
     "move_group planning, median (ms)": ("<=", 20.0),
     "move_group planning, 95th percentile (ms)": ("<=", 100.0),
@@ -441,35 +436,6 @@ def measure_images(count: int = 20) -> Dict[str, float]:
     return result
 
 
-def measure_planning() -> Dict[str, float]:
-    """Plans to the random targets of arm_move's planner test, as the mover would."""
-    import numpy as np
-    import yaml
-    from arm_move.planner import planner_from_config, random_reachable_targets
-    from arm_move.scene_config import world_scene
-
-    config = os.path.join(REPO, "arm_move", "config")
-
-    def load(name):
-        with open(os.path.join(config, name), encoding="utf-8") as stream:
-            return yaml.safe_load(stream)
-    robot = load("px100.yaml")
-    planner = planner_from_config(robot, load("mover.yaml"))
-    scene = world_scene(load("scene.yaml"))
-    opening = robot["finger"]["max"]
-    start, seconds, failed = np.zeros(4), [], 0
-    for target in random_reachable_targets(planner, scene, PLANNING_TARGETS, opening):
-        plan = planner.plan_to_position(start, opening, target, scene)
-        seconds.append(plan.planning_seconds)
-        if plan.ok:
-            start = plan.path[-1]
-        else:
-            failed += 1
-    return {"median": 1000 * float(np.median(seconds)),
-            "p95": 1000 * float(np.percentile(seconds, 95)),
-            "success": 100.0 * (PLANNING_TARGETS - failed) / PLANNING_TARGETS}
-
-
 def verdict(name: str, value: float) -> str:
     sense, target = TARGETS[name]
     met = {">=": value >= target, "<=": value <= target, "<": value < target}[sense]
@@ -525,8 +491,6 @@ def main() -> int:
     lasers = laser_cost.measure()
     print("bench: camera images...", flush=True)
     images = measure_images()
-    print("bench: arm planning...", flush=True)
-    planning = measure_planning()
     one, eight = crowd[1]["cpu_ms_per_sim_s"], crowd[8]["cpu_ms_per_sim_s"]
     rows = [
         ("max real-time factor, ROS, 1 ms step", fast["rtf"], "{:.1f}"),
@@ -560,9 +524,6 @@ def main() -> int:
                  ("soak: failed calls", soak["failed"], "{:.0f}"),
                  ("soak: rotate calls", soak["calls"], "{:.0f}")]
     rows += [
-        ("arm planning, median (ms)", planning["median"], "{:.1f}"),
-        ("arm planning, 95th percentile (ms)", planning["p95"], "{:.1f}"),
-        ("arm planning, targets reached (%)", planning["success"], "{:.1f}"),
         ("move_group up after roslaunch (s)", moveit["up"], "{:.2f}"),
         ("move_group planning, median (ms)", moveit["median"], "{:.1f}"),
         ("move_group planning, 95th percentile (ms)", moveit["p95"], "{:.1f}"),
@@ -571,8 +532,7 @@ def main() -> int:
     ]
     width = max(len(name) for name, _, _ in rows)
     lines = ["sim_bridge benchmark: 40 static objects, RB1-class robots (diff drive, 720-beam "
-             f"laser at 20 Hz), {WINDOW:g} s windows; laser kernel: {lasers['kernel']}; "
-             f"arm_move planning: {PLANNING_TARGETS} random targets", "",
+             f"laser at 20 Hz), {WINDOW:g} s windows; laser kernel: {lasers['kernel']}", "",
              f"| {'figure':{width}} | {'measured':>9} | {'target':>8} | {'':7} |",
              f"|{'-' * (width + 2)}|{'-' * 11}|{'-' * 10}|{'-' * 9}|"]
     for name, value, form in rows:

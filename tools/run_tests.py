@@ -47,12 +47,8 @@ ROSTEST_JOBS = 2
 # time. rotate.test (5x) failed beside another file once (-180 degrees overshot to -180.4,
 # then "no progress for 2 s": the rotate service's stall check counted no turn back after
 # an overshoot, fixed in d60315c; it stays alone until it is measured stable beside
-# others); flip_headings.test (2x, four flip nodes) says so itself. arm_move's
-# pick_place.test waits in simulated time (about 4x real time) for its controllers'
-# results: beside another file once (2026-11-26) a result came 5.2 simulated s late
-# ("Got a transition callback on a goal handle that we're not tracking"); 3 of 3 alone.
-ROSTEST_ALONE = ("my_rb1_ros/rotate.test", "diff_drive/flip_headings.test",
-                 "arm_move/pick_place.test")
+# others); flip_headings.test (2x, four flip nodes) says so itself.
+ROSTEST_ALONE = ("my_rb1_ros/rotate.test", "diff_drive/flip_headings.test")
 
 
 # The e2e tier in two lanes side by side (each test starts its own master on a free port

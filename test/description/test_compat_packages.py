@@ -32,20 +32,26 @@ def test_each_package_has_its_folders_name(folder):
     assert name == folder
 
 
+# interfaces a course solution builds against, as a student's package does (arm_move's
+# services carry moveit_msgs' error codes): on a machine with MoveIt its underlay has them
+SOLUTION_INTERFACES = {"moveit_msgs", "octomap_msgs", "object_recognition_msgs"}
+
+
 def test_the_rest_configures_with_every_shim_left_out(tmp_path):
     """The README's recipe for machines with the real packages: blacklist every shim. With
-    no underlay providing them, the configure passing shows that nothing else build-depends
-    on one."""
+    no underlay providing them (but the message packages a solution builds against), the
+    configure passing shows that nothing else build-depends on one."""
     source = os.path.join(REPO, ".ws", "src")
     environment = {"PATH": "/usr/bin:/bin", "HOME": os.environ.get("HOME", "/root")}
+    left_out = [shim for shim in SHIMS if shim not in SOLUTION_INTERFACES]
     result = subprocess.run(
         ["cmake", "-S", source, "-B", str(tmp_path / "build"),
          f"-DCATKIN_DEVEL_PREFIX={tmp_path / 'devel'}", "-DPYTHON_EXECUTABLE=/usr/bin/python3",
-         f"-DCATKIN_BLACKLIST_PACKAGES={';'.join(SHIMS)}"],
+         f"-DCATKIN_BLACKLIST_PACKAGES={';'.join(left_out)}"],
         env=environment, capture_output=True, text=True, timeout=300, check=False)
     assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
     traversed = re.findall(r"^-- ~~  - (\S+)$", result.stdout, re.M)
     others = {os.path.basename(os.path.dirname(p))
               for pattern in ("*", os.path.join("courses", "*"))
               for p in glob.glob(os.path.join(REPO, pattern, "package.xml"))}
-    assert set(traversed) == others
+    assert set(traversed) == others | SOLUTION_INTERFACES
