@@ -122,6 +122,32 @@ def test_the_trajectory_keeps_the_joint_limits_scaled(setup):
     np.testing.assert_allclose(result.timed.velocities[[0, -1]], 0.0)
 
 
+def test_a_start_a_hair_outside_its_bounds_does_not_slow_the_motion():
+    """Interbotix's px100 in the simulation (two finger joints, no mimic) reports its
+    fingers closed, the right one 2e-7 m beyond its limit. Opening them takes the time of
+    the ideal triangle profile (0.022 m at 0.01 m/s^2: 2.97 s); the start's prefix point,
+    off the path's direction, left the time parameterisation crawling (52 s)."""
+    with open(os.path.join(DATA, "interbotix_px100_gazebo.urdf"), encoding="utf-8") as urdf, \
+            open(os.path.join(DATA, "interbotix_px100.srdf"), encoding="utf-8") as srdf:
+        model = robot_model.load(urdf.read(), srdf.read(), {
+            f: {"has_velocity_limits": True, "max_velocity": 1.0,
+                "has_acceleration_limits": True, "max_acceleration": 0.01}
+            for f in ("left_finger", "right_finger")})
+    scene = PlanningScene(model)
+    scene.set_state(dict(model.default_positions(), left_finger=0.014999999999999996,
+                         right_finger=-0.014999808756815974))
+    configs = {"planner_configs": CONFIGS["planner_configs"],
+               "interbotix_gripper": {"default_planner_config": "RRTConnectkConfigDefault"}}
+    planner = OmplPlanner(PlannerConfigs(configs), lambda group: None)
+    request = MotionPlanRequest(group_name="interbotix_gripper", allowed_planning_time=5.0)
+    request.goal_constraints = [Constraints(joint_constraints=[
+        JointConstraint(joint_name=j, position=v, tolerance_above=1e-4, tolerance_below=1e-4,
+                        weight=1.0) for j, v in (("left_finger", 0.037), ("right_finger", -0.037))])]
+    result = planner.plan(scene, request)
+    assert result.code == Codes.SUCCESS, result.message
+    assert result.timed.times[-1] == pytest.approx(2 * np.sqrt(0.022 / 0.01), rel=0.02)
+
+
 @pytest.mark.parametrize("case, code", [
     ("inside a box", Codes.GOAL_IN_COLLISION),
     ("beyond reach", Codes.NO_IK_SOLUTION),
