@@ -13,7 +13,7 @@ from __future__ import annotations
 import os
 from typing import Dict, Optional
 
-from fixture_edits import Chmod, Copy, Fault, Rename, Replace, ReplaceAll, make
+from fixture_edits import Chmod, Copy, Delete, Fault, Rename, Replace, ReplaceAll, make
 
 FILES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "hw3_fixtures")
 HW3_PACKAGES = ("diff_drive", "arm_move")
@@ -73,6 +73,25 @@ CORRECT_BY_THE_ASSIGNMENT: Dict[str, Fault] = {
         "the yaml read with Melodic's ${load_yaml(...)} instead of xacro.load_yaml",
         (Replace(XACRO, "${xacro.load_yaml(config_file)}", "${load_yaml(config_file)}"),),
         {}, ("layout",)),
+    "arm_move_written_otherwise": Fault(
+        "arm_move as a student writes it: one script node in the px100 namespace on "
+        "moveit_commander's defaults, pose targets at a few fixed gripper pitches, the arm on "
+        "Interbotix's own world (no table: the ground is z 0), no unpause (its README says "
+        "press play), services answering only the error code, arm.test with its own "
+        "unittest on fake MoveIt",
+        (Copy("student_arm_move/CMakeLists.txt", "arm_move/CMakeLists.txt"),
+         Copy("student_arm_move/package.xml", "arm_move/package.xml"),
+         Copy("student_arm_move/arm.launch", "arm_move/launch/arm.launch"),
+         Copy("student_arm_move/mover", "arm_move/nodes/mover"),
+         Copy("student_arm_move/arm.test", "arm_move/test/arm.test"),
+         Copy("student_arm_move/test_step.py", "arm_move/test/test_step.py"),
+         *(Copy(f"student_arm_move/{srv}", f"arm_move/srv/{srv}")
+           for srv in ("Step.srv", "Reset.srv", "Follow.srv")),
+         *(Delete(f"arm_move/{path}") for path in (
+             "setup.py", "src/arm_move/__init__.py", "src/arm_move/mover.py",
+             "src/arm_move/scene.py", "config/mover.yaml", "config/scene.yaml",
+             "worlds/arm_box.world"))),
+        {}, ("layout", "arm_test", "step")),
 }
 
 

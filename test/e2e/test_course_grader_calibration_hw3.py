@@ -20,6 +20,7 @@ BATCHES = {
                          "yaml_loaded_the_old_way")),
     "flip": (("layout", "flip"),
              ("paused_flip_by_hand", "flip_node_found_by_name", "nodes_not_executable")),
+    "arm": (("layout", "arm_test", "step"), ("arm_move_written_otherwise",)),
 }
 RESULTS = os.path.join("test_results", "e2e", "course_grader", "calibration_hw3")
 
