@@ -281,6 +281,8 @@ class Mover:
                              "the RealSense box")
         self._place_in_simulation(position, orientation)
         self._move_gripper(True)
+        if self.holding:        # an open gripper lets go of the block
+            self._detach_block()
         self.arm.set_named_target("Home")
         self._plan_and_execute(self.arm, "reset: Home")
         if request.clear_waypoints:
