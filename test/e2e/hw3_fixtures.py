@@ -84,7 +84,7 @@ CORRECT_BY_THE_ASSIGNMENT: Dict[str, Fault] = {
          Copy("student_arm_move/arm.launch", "arm_move/launch/arm.launch"),
          Copy("student_arm_move/mover", "arm_move/nodes/mover"),
          Copy("student_arm_move/arm.test", "arm_move/test/arm.test"),
-         Copy("student_arm_move/test_step.py", "arm_move/test/test_step.py"),
+         Copy("student_arm_move/step_unittest.py", "arm_move/test/test_step.py"),
          *(Copy(f"student_arm_move/{srv}", f"arm_move/srv/{srv}")
            for srv in ("Step.srv", "Reset.srv", "Follow.srv")),
          *(Delete(f"arm_move/{path}") for path in (
