@@ -179,6 +179,7 @@ class Mover:
             group.set_max_velocity_scaling_factor(self.settings.velocity_scaling)
             group.set_max_acceleration_scaling_factor(self.settings.acceleration_scaling)
         self.tip = self.arm.get_end_effector_link()
+        self.arm_joints = set(self.arm.get_active_joints())
         self.fingers = self.robot.get_link_names(self.settings.gripper_group)
         self.finger_values = {
             gripper_open: self.gripper.get_named_target_values(state)
@@ -350,12 +351,13 @@ class Mover:
         """The arm's joints putting the gripper point at ``target`` facing it, free of
         collisions, and the pitch; Outcome NO_IK_SOLUTION or GOAL_IN_COLLISION."""
         bearing = math.atan2(target[1], target[0])
+        seed = self.robot.get_current_state()     # the same seed for every pitch
         for pitch in self.pitches:
-            solution = self._ik(target, pitch, bearing, avoid_collisions=True)
+            solution = self._ik(target, pitch, bearing, seed, avoid_collisions=True)
             if solution is not None:
                 return solution, pitch
         for pitch in self.pitches:      # reachable, but touching something at every pitch?
-            solution = self._ik(target, pitch, bearing, avoid_collisions=False)
+            solution = self._ik(target, pitch, bearing, seed, avoid_collisions=False)
             if solution is not None:
                 touched = self._contacts(solution)
                 raise Outcome(Codes.GOAL_IN_COLLISION,
@@ -366,7 +368,7 @@ class Mover:
                       f"at any gripper pitch from {self.settings.pitch_range_degrees[0]:g} to "
                       f"{self.settings.pitch_range_degrees[1]:g} deg); nothing moved")
 
-    def _ik(self, target, pitch: float, bearing: float,
+    def _ik(self, target, pitch: float, bearing: float, seed: RobotState,
             avoid_collisions: bool) -> Optional[Dict[str, float]]:
         request = GetPositionIKRequest()
         ik = request.ik_request
@@ -374,15 +376,14 @@ class Mover:
         ik.ik_link_name = self.tip
         ik.avoid_collisions = avoid_collisions
         ik.timeout = rospy.Duration(self.settings.ik_timeout)
-        ik.robot_state = self.robot.get_current_state()
+        ik.robot_state = seed
         ik.pose_stamped = pose_stamped(self.settings.frame, target,
                                        tft.quaternion_from_euler(0.0, pitch, bearing))
         answer = self.ik(request)
         if answer.error_code.val != Codes.SUCCESS:
             return None
         state = answer.solution.joint_state
-        arm_joints = set(self.arm.get_active_joints())
-        return {n: p for n, p in zip(state.name, state.position) if n in arm_joints}
+        return {n: p for n, p in zip(state.name, state.position) if n in self.arm_joints}
 
     def _state(self, joints: Dict[str, float], gripper_open: Optional[bool] = None) -> RobotState:
         values = dict(joints)

@@ -255,11 +255,13 @@ class Session:
         session of its own that ignored the signals)."""
         services = [p for p in self.processes if p[0] in SERVICES]
         self._stop_all([p for p in self.processes if p[0] not in SERVICES])
-        # under the start lock: a stopping Xvfb removes its socket after it has freed its
-        # display number, which one starting meanwhile would take (see start_display)
+        self._stop_all([p for p in services if p[0] != "xvfb"])
+        # the screen under the start lock: a stopping Xvfb removes its socket after it has
+        # freed its display number, which one starting meanwhile would take (see
+        # start_display); roscore's stop need not hold other runs' screens back
         with open(XVFB_START_LOCK, "a", encoding="utf-8") as lock:
             fcntl.flock(lock, fcntl.LOCK_EX)
-            self._stop_all(services)
+            self._stop_all([p for p in services if p[0] == "xvfb"])
         self.strays = kill_tagged(self.tag, self.limits["stop"])
 
     def _stop_all(self, processes: List[tuple]) -> None:
