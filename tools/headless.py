@@ -119,6 +119,13 @@ class Launch:
         self.process = process
         self.log_path = log_path
 
+    def exited_early(self) -> RuntimeError:
+        """The error for a launch that ended while a test still needed it: its exit code
+        and the end of its log (the log file is gone with a CI machine)."""
+        tail = self.output()[-3000:]
+        return RuntimeError(f"roslaunch exited early with code {self.process.returncode}; "
+                            f"{self.log_path} ends:\n{tail}")
+
     def output(self) -> str:
         with open(self.log_path, encoding="utf-8", errors="replace") as stream:
             return stream.read()
@@ -214,7 +221,7 @@ def stable_screenshot(display: str, path: str, window_title: str, launch: Launch
     takes screenshots until ``settle`` in a row are identical; returns ``path``."""
     def mapped():
         if not launch.running():
-            raise RuntimeError(f"roslaunch exited early; see {launch.log_path}")
+            raise launch.exited_early()
         return window_mapped(display, window_title)
 
     started = time.monotonic()
@@ -226,7 +233,7 @@ def stable_screenshot(display: str, path: str, window_title: str, launch: Launch
     def settled():
         nonlocal same
         if not launch.running():
-            raise RuntimeError(f"roslaunch exited early; see {launch.log_path}")
+            raise launch.exited_early()
         screenshot(display, path)
         # rviz's status bar shows a frame rate that changes when rendering is slow; a screen
         # of one colour is a window that has not drawn its first frame yet (software GL on a

@@ -13,8 +13,9 @@ robot too). No ROS here.
 from __future__ import annotations
 
 import logging
+import math
 from dataclasses import dataclass, field
-from typing import Dict, FrozenSet, Iterable, List, Sequence, Set, Tuple
+from typing import Dict, FrozenSet, Iterable, List, Optional, Sequence, Set, Tuple
 
 import fcl
 import numpy as np
@@ -48,6 +49,28 @@ def _positive(values: Sequence[float], what: str) -> List[float]:
     return values
 
 
+class Mesh(fcl.BVHModel):
+    """FCL's triangle BVH with the sphere that holds its vertices (``centre``, ``radius``
+    in the mesh's frame: FCL keeps its own but does not show it to Python)."""
+
+    centre = np.zeros(3)
+    radius = math.inf
+
+
+def geometry_sphere(geometry) -> Tuple[np.ndarray, float]:
+    """A sphere holding the geometry (centre in its frame, radius); a half space's is
+    infinite."""
+    if isinstance(geometry, fcl.Box):
+        return np.zeros(3), float(np.linalg.norm(geometry.side)) / 2.0
+    if isinstance(geometry, fcl.Sphere):
+        return np.zeros(3), float(geometry.radius)
+    if isinstance(geometry, (fcl.Cylinder, fcl.Cone)):   # both centred on their middle
+        return np.zeros(3), math.hypot(geometry.radius, geometry.lz / 2.0)
+    if isinstance(geometry, Mesh):
+        return geometry.centre, geometry.radius
+    return np.zeros(3), math.inf
+
+
 def mesh_geometry(vertices: np.ndarray, triangles: np.ndarray, what: str) -> fcl.BVHModel:
     vertices = np.asarray(vertices, dtype=float).reshape(-1, 3)
     triangles = np.asarray(triangles, dtype=int).reshape(-1, 3)
@@ -55,10 +78,12 @@ def mesh_geometry(vertices: np.ndarray, triangles: np.ndarray, what: str) -> fcl
         raise ShapeError(f"{what} has no triangles or a vertex that is not finite")
     if triangles.min() < 0 or triangles.max() >= len(vertices):
         raise ShapeError(f"{what} has a triangle naming a vertex it lacks")
-    model = fcl.BVHModel()
+    model = Mesh()
     model.beginModel(len(vertices), len(triangles))
     model.addSubModel(vertices, triangles)
     model.endModel()
+    model.centre = (vertices.min(axis=0) + vertices.max(axis=0)) / 2.0
+    model.radius = float(np.linalg.norm(vertices - model.centre, axis=1).max())
     return model
 
 
@@ -156,8 +181,26 @@ class Body:
     shapes: List[Shape]
     objects: List[fcl.CollisionObject] = field(default_factory=list)
 
+    # the broad phase's view of the body, in its own frame: a sphere holding every shape
+    # (centre, radius) and, for a body that is one box, the box (its pose, half sizes)
+    centre: np.ndarray = field(init=False)
+    radius: float = field(init=False)
+    box: Optional[Tuple[np.ndarray, np.ndarray]] = field(init=False)
+
     def __post_init__(self):
         self.objects = [fcl.CollisionObject(s.geometry) for s in self.shapes]
+        spheres = []
+        for shape in self.shapes:
+            centre, radius = geometry_sphere(shape.geometry)
+            spheres.append((shape.offset[:3, :3] @ centre + shape.offset[:3, 3], radius))
+        centres = np.array([c for c, _ in spheres]).reshape(-1, 3)
+        self.centre = (centres.min(axis=0) + centres.max(axis=0)) / 2.0 if spheres \
+            else np.zeros(3)
+        self.radius = max((float(np.linalg.norm(c - self.centre)) + r for c, r in spheres),
+                          default=0.0)
+        self.box = None
+        if len(self.shapes) == 1 and isinstance(self.shapes[0].geometry, fcl.Box):
+            self.box = (self.shapes[0].offset, np.asarray(self.shapes[0].geometry.side) / 2.0)
 
     def place(self, pose: np.ndarray) -> None:
         for shape, obj in zip(self.shapes, self.objects):

@@ -31,6 +31,9 @@ from moveit_core.robot_model import RobotModel
 
 # rospy shows the rosout.* loggers on the console and /rosout
 LOG = logging.getLogger("rosout.moveit_core")
+# m: a pair whose bounding volumes are farther apart than this is not handed to FCL (a
+# margin over rounding: FCL counts touching as contact)
+NEAR = 1e-4
 
 
 class SceneError(ValueError):
@@ -147,7 +150,7 @@ class PlanningScene:
         self.objects: Dict[str, SceneObject] = {}
         self.attached: Dict[str, AttachedObject] = {}
         self._moved_by: Dict[Optional[str], Set[str]] = {}
-        self._pairs: Dict[tuple, tuple] = {}      # see _pairs_to_check
+        self._pairs: Dict[tuple, _Checks] = {}      # see _pairs_to_check
 
     def copy(self) -> "PlanningScene":
         """An independent scene (a planning request's, or another thread's): the same
@@ -303,8 +306,8 @@ class PlanningScene:
                 self._moved_by[group] = moved
         return self._moved_by[group]
 
-    def _pairs_to_check(self, group: Optional[str]) -> tuple:
-        """(the bodies to place, the pairs to check): pairs of which one moves with the
+    def _pairs_to_check(self, group: Optional[str]) -> "_Checks":
+        """The bodies to place and the pairs to check: pairs of which one moves with the
         group, not allowed by the matrix. Kept until the scene's objects, attached objects
         or matrix change (planning checks thousands of states of one scene)."""
         key = (group, tuple((n, id(o.body)) for n, o in self.objects.items()),
@@ -325,9 +328,38 @@ class PlanningScene:
                 candidates += [(attached.body, link) for link in links
                                if link.name not in attached.touch_links]
         pairs = [(a, b) for a, b in candidates if not self.acm.allowed(a.name, b.name)]
-        placed = {id(body): body for pair in pairs for body in pair}
-        self._pairs = {key: (list(placed.values()), pairs)}
+        self._pairs = {key: _Checks(pairs)}
         return self._pairs[key]
+
+    def _world_poses(self, checks: "_Checks", poses: Mapping[str, np.ndarray],
+                     count: int) -> np.ndarray:
+        """Each checked body's pose in the model frame in each state (bodies x N x 4 x 4),
+        from the links' poses (N x 4 x 4 each)."""
+        placed = []
+        for body in checks.bodies:
+            if body.name in self.links:
+                placed.append(poses[body.name])
+            elif body.name in self.attached:
+                attached = self.attached[body.name]
+                placed.append(poses[attached.link] @ attached.offset)
+            else:
+                placed.append(np.broadcast_to(self.objects[body.name].pose, (count, 4, 4)))
+        return np.stack(placed) if placed else np.zeros((0, count, 4, 4))
+
+    @staticmethod
+    def _touching(checks: "_Checks", world: np.ndarray, pairs: Sequence[int], state: int,
+                  first_only: bool) -> List[Tuple[str, str]]:
+        """FCL's answer for some of the pairs (their indices) in one state."""
+        for index in np.unique(np.concatenate((checks.first[pairs], checks.second[pairs]))):
+            checks.bodies[index].place(world[index, state])
+        found: List[Tuple[str, str]] = []
+        for pair in pairs:
+            a, b = checks.pairs[pair]
+            if a.touches(b):
+                found.append((a.name, b.name))
+                if first_only:
+                    break
+        return found
 
     def contacts(self, positions: Optional[Mapping[str, float]] = None,
                  group: Optional[str] = None, first_only: bool = True) -> List[Tuple[str, str]]:
@@ -337,24 +369,29 @@ class PlanningScene:
         if positions:
             state.update(positions)
         poses = self.model.link_poses(state)
-        bodies, pairs = self._pairs_to_check(group)
-        for body in bodies:
-            body.place(self._pose_of(body.name, poses))
-        found: List[Tuple[str, str]] = []
-        for a, b in pairs:
-            if a.touches(b):
-                found.append((a.name, b.name))
-                if first_only:
-                    break
-        return found
+        checks = self._pairs_to_check(group)
+        world = self._world_poses(checks, {k: v[None] for k, v in poses.items()}, 1)
+        # every pair: for one state the broad phase costs about what FCL does
+        return self._touching(checks, world, np.arange(len(checks.pairs)), 0, first_only)
 
-    def _pose_of(self, name: str, poses) -> np.ndarray:
-        if name in self.links:
-            return poses[name]
-        if name in self.attached:
-            attached = self.attached[name]
-            return poses[attached.link] @ attached.offset
-        return self.objects[name].pose
+    def first_collision(self, positions: Mapping[str, float], variables: Sequence[str],
+                        values: np.ndarray, group: Optional[str], order: Sequence[int]
+                        ) -> Optional[int]:
+        """The first state of ``values`` (N x len(variables), over ``positions`` over the
+        scene's state) in ``order`` that collides, or None: a motion's states, kinematics and
+        broad phase for all of them at once, FCL for the pairs found near."""
+        values = np.asarray(values, dtype=float).reshape(-1, len(variables))
+        poses = self.model.link_poses_many(dict(self.positions, **positions), variables,
+                                           values)
+        checks = self._pairs_to_check(group)
+        world = self._world_poses(checks, poses, len(values))
+        near = checks.near(world)
+        wanted = near.any(axis=0)
+        for state in order:
+            if wanted[state] and self._touching(checks, world, np.flatnonzero(near[:, state]),
+                                                state, True):
+                return state
+        return None
 
     def in_collision(self, positions: Optional[Mapping[str, float]] = None,
                      group: Optional[str] = None) -> bool:
@@ -387,6 +424,98 @@ class PlanningScene:
             scene.allowed_collision_matrix = _matrix_msg(
                 self.acm, list(self.links) + list(self.objects) + list(self.attached))
         return scene
+
+
+class _Checks:
+    """The pairs a scene checks for one group, with their broad phase: each body's bounding
+    sphere (and box, for a body that is one box) tested for all pairs and states at once;
+    only pairs within NEAR of touching go to FCL."""
+
+    def __init__(self, pairs: Sequence[Tuple[Body, Body]]):
+        self.pairs = list(pairs)
+        index: Dict[int, int] = {}
+        self.bodies: List[Body] = []
+        for body in (body for pair in self.pairs for body in pair):
+            if id(body) not in index:
+                index[id(body)] = len(self.bodies)
+                self.bodies.append(body)
+        self.first = np.array([index[id(a)] for a, _ in self.pairs], dtype=int)
+        self.second = np.array([index[id(b)] for _, b in self.pairs], dtype=int)
+        self.centres = np.array([b.centre for b in self.bodies]).reshape(-1, 3)
+        self.radii = np.array([b.radius for b in self.bodies])
+        # a pair with a box: the other body's sphere against the box (tighter than two
+        # spheres around a table); ``sphere`` and ``boxed`` are the pair's bodies so ordered
+        boxed = [b.box is not None or a.box is not None for a, b in self.pairs]
+        self.with_box = np.array(boxed, dtype=bool)
+        self.two_boxes = np.array([a.box is not None and b.box is not None
+                                   for a, b in self.pairs], dtype=bool)
+        self.sphere = np.where([b.box is not None for _, b in self.pairs], self.first,
+                               self.second)
+        self.boxed = np.where([b.box is not None for _, b in self.pairs], self.second,
+                              self.first)
+        self.box_poses = np.array([b.box[0] if b.box is not None else np.eye(4)
+                                   for b in self.bodies]).reshape(-1, 4, 4)
+        self.half_sizes = np.array([b.box[1] if b.box is not None else np.zeros(3)
+                                    for b in self.bodies]).reshape(-1, 3)
+
+    def near(self, world: np.ndarray) -> np.ndarray:
+        """Pairs x states: True where the pair's bounds are within NEAR of each other, with
+        the bodies at ``world`` (bodies x N x 4 x 4). Spheres first, for all; a sphere
+        against a box, then box against box, only where the spheres meet."""
+        centres = (world[:, :, :3, :3] @ self.centres[:, None, :, None])[..., 0] + \
+            world[:, :, :3, 3]
+        with np.errstate(invalid="ignore"):     # infinite radii (planes) are always near
+            gap = np.linalg.norm(centres[self.first] - centres[self.second], axis=-1) - \
+                self.radii[self.first][:, None] - self.radii[self.second][:, None]
+        near = ~(gap > NEAR)
+        pairs, states = np.nonzero(near & self.with_box[:, None])
+        if len(pairs):
+            sphere, boxed = self.sphere[pairs], self.boxed[pairs]
+            frames = world[boxed, states] @ self.box_poses[boxed]
+            offset = centres[sphere, states] - frames[:, :3, 3]
+            local = (offset[:, None, :] @ frames[:, :3, :3])[:, 0, :]
+            outside = np.clip(np.abs(local) - self.half_sizes[boxed], 0.0, None)
+            apart = np.linalg.norm(outside, axis=-1) - self.radii[sphere] > NEAR
+            near[pairs[apart], states[apart]] = False
+        pairs, states = np.nonzero(near & self.two_boxes[:, None])
+        if len(pairs):
+            first, second = self.first[pairs], self.second[pairs]
+            apart = _boxes_apart(world[first, states] @ self.box_poses[first],
+                                 self.half_sizes[first],
+                                 world[second, states] @ self.box_poses[second],
+                                 self.half_sizes[second])
+            near[pairs[apart], states[apart]] = False
+        return near
+
+
+# added to the rotation's entries in the separating-axis test, so that two nearly parallel
+# edges (whose cross product is almost zero) never seem to separate the boxes
+PARALLEL_EDGES = 1e-6
+
+
+def _boxes_apart(a: np.ndarray, half_a: np.ndarray, b: np.ndarray, half_b: np.ndarray
+                 ) -> np.ndarray:
+    """For M pairs of boxes (poses M x 4 x 4, half sizes M x 3): True where they are more
+    than NEAR apart along one of their 15 separating axes (Gottschalk's OBB test, in a's
+    frame: its 3 face normals, b's 3, the 9 edge cross products)."""
+    rotation = np.swapaxes(a[:, :3, :3], -1, -2) @ b[:, :3, :3]
+    offset = ((b[:, :3, 3] - a[:, :3, 3])[:, None, :] @ a[:, :3, :3])[:, 0, :]
+    size = np.abs(rotation) + PARALLEL_EDGES
+    apart = np.any(np.abs(offset) > half_a + (size @ half_b[:, :, None])[:, :, 0] + NEAR,
+                   axis=-1)
+    along_b = (offset[:, None, :] @ rotation)[:, 0, :]
+    apart |= np.any(np.abs(along_b) > (half_a[:, None, :] @ size)[:, 0, :] + half_b + NEAR,
+                    axis=-1)
+    for i in range(3):
+        i1, i2 = (i + 1) % 3, (i + 2) % 3
+        for j in range(3):
+            j1, j2 = (j + 1) % 3, (j + 2) % 3
+            reach = half_a[:, i1] * size[:, i2, j] + half_a[:, i2] * size[:, i1, j] + \
+                half_b[:, j1] * size[:, i, j2] + half_b[:, j2] * size[:, i, j1]
+            distance = np.abs(offset[:, i2] * rotation[:, i1, j] -
+                              offset[:, i1] * rotation[:, i2, j])
+            apart |= distance > reach + NEAR
+    return apart
 
 
 def _appended(old: CollisionObject, new: CollisionObject, relative: np.ndarray

@@ -146,11 +146,15 @@ class OmplPlanner:
         def valid(vector) -> bool:
             return not scene.contacts(dict(start, **dict(zip(joints, vector))), group_name)
 
+        def motion_free(a, b, step) -> bool:
+            states, order = _motion_states(a, b, step)
+            return scene.first_collision(start, joints, states, group_name, order) is None
+
         order = np.argsort([np.linalg.norm(g - start_vector) for g in goal_vectors])
         path = None
         fine = resolution / FINAL_CHECK_DIVISOR
         for index in order:   # the straight line first (checked as finely as a found path)
-            if _motion_free(start_vector, goal_vectors[index], fine, valid):
+            if motion_free(start_vector, goal_vectors[index], fine):
                 path = [start_vector, goal_vectors[index]]
                 break
         if path is None and len(goals) < GOAL_SAMPLES and any(
@@ -165,7 +169,7 @@ class OmplPlanner:
             if isinstance(path, PlanResult):
                 path.start = prefix
                 return path
-            if not _path_free(path, fine, valid):
+            if not all(motion_free(a, b, fine) for a, b in zip(path, path[1:])):
                 # a corner the planning resolution stepped over: search again checking
                 # motions as finely as the final check, while time is left
                 if time.monotonic() >= deadline or resolution <= fine:
@@ -327,23 +331,19 @@ def _interpolate(path: Sequence[np.ndarray], resolution: float) -> List[np.ndarr
     return dense
 
 
-def _path_free(path, resolution, valid) -> bool:
-    return all(_motion_free(a, b, resolution, valid) for a, b in zip(path, path[1:]))
-
-
-def _motion_free(a, b, resolution, valid) -> bool:
-    """Every state of the straight motion from a to b, ``resolution`` apart, is valid
-    (checked from the ends inwards by halving, as OMPL's discrete motion validator does)."""
+def _motion_states(a, b, resolution):
+    """The states of the straight motion from a to b, ``resolution`` apart (a first, b
+    last), and the order to check them in: b, then from the ends inwards by halving, as
+    OMPL's discrete motion validator does (a, the motion's start, is not checked)."""
     steps = max(1, int(math.ceil(np.linalg.norm(b - a) / resolution)))
-    if not valid(b):
-        return False
+    states = a + np.outer(np.arange(steps + 1) / steps, b - a)
+    order = [steps]
     pending = [(0, steps)]
     while pending:
         low, high = pending.pop(0)
         if high - low < 2:
             continue
         middle = (low + high) // 2
-        if not valid(a + (b - a) * (middle / steps)):
-            return False
+        order.append(middle)
         pending += [(low, middle), (middle, high)]
-    return True
+    return states, order
