@@ -179,8 +179,11 @@ class KdlSolver:
         frame = kdl.Frame()
         weights = np.array([1.0, 1.0, 1.0, self.weight, self.weight, self.weight])
         errors: List[float] = []
+        damping = DAMPING * np.eye(6)
+        array = kdl.JntArray(len(self.joints))
         for _ in range(iterations):
-            array = self._array(q)
+            for i, value in enumerate(q.tolist()):
+                array[i] = value
             self._fk.JntToCart(array, frame)
             twist = kdl.diff(frame, goal)          # in the base frame: (velocity, rotation)
             values = [twist[i] for i in range(6)]
@@ -197,8 +200,7 @@ class KdlSolver:
             self._jacobian_solver.JntToJac(array, self._jacobian)
             jacobian = np.array([[self._jacobian[r, c] for c in range(len(self.joints))]
                                  for r in range(6)]) * weights[:, None]
-            step = jacobian.T @ np.linalg.solve(jacobian @ jacobian.T + DAMPING * np.eye(6),
-                                                weighted)
+            step = jacobian.T @ np.linalg.solve(jacobian @ jacobian.T + damping, weighted)
             largest = np.max(np.abs(step))
             if largest > MAX_STEP:
                 step *= MAX_STEP / largest
