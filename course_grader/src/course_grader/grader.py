@@ -67,7 +67,9 @@ def plan_command(course: Course, key: str, env: Dict[str, str],
         hand_package, word = hand
         found = submission.sourced_find(env, hand_package)
         node = instructions.node_started_by_hand(
-            readmes, hand_package, word, layout_checks.runnable_nodes(found) if found else [])
+            readmes, hand_package, word,
+            layout_checks.runnable_nodes(found) + layout_checks.built_nodes(found)
+            if found else [])
         if node:
             plan.by_hand.append((hand_package, node))
             plan.notes.append(f"{not_passed}; the grader ran 'rosrun {hand_package} {node}' "

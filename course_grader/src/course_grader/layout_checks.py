@@ -79,6 +79,25 @@ def runnable_nodes(package: str) -> List[str]:
                  or os.path.normpath(f"nodes/{name}") in relayed)]
 
 
+# a C++ node: add_executable's target, which catkin builds into the devel space where rosrun
+# finds it by that name (``${PROJECT_NAME}`` in it is the project's name)
+ADD_EXECUTABLE = re.compile(r"\badd_executable\s*\(\s*([^\s)]+)", re.IGNORECASE)
+PROJECT = re.compile(r"\bproject\s*\(\s*([^\s)]+)", re.IGNORECASE)
+
+
+def built_nodes(package: str) -> List[str]:
+    """The executables ``package``'s CMakeLists.txt builds (``add_executable``): C++ nodes,
+    which ``rosrun`` runs by their target names."""
+    cmake = os.path.join(package, "CMakeLists.txt")
+    if not os.path.isfile(cmake):
+        return []
+    text = re.sub(r"#[^\n]*", "", _read(cmake))
+    project = PROJECT.search(text)
+    name = project.group(1) if project else os.path.basename(os.path.normpath(package))
+    return sorted({target.replace("${PROJECT_NAME}", name)
+                   for target in ADD_EXECUTABLE.findall(text)})
+
+
 def _files_present(package: str, folder: str, files: List[str]) -> Dict:
     missing = [f for f in files if not os.path.isfile(os.path.join(folder, f))]
     return check(f"{package}'s files", not missing,

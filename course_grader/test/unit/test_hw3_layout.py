@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from course_grader import course as course_file
-from course_grader import hw3_tests, layout_checks
+from course_grader import hw3_tests, instructions, layout_checks
 from course_grader.hw3_measures import FlipCount, planar_travel, still_points
 from course_grader.hw3_probe import fill_request, response_code
 
@@ -84,6 +84,22 @@ def test_a_node_without_the_executable_bit_runs_through_catkins_relay(packages, 
         os.chmod(os.path.join(ddrive, "nodes", node), 0o644)
     assert layout_checks.runnable_nodes(ddrive) == ["flip"]
     assert failed(layout_checks.layout(ddrive, None, spec)) == ["the submission has no arm_move"]
+
+
+def test_a_cpp_node_is_found_by_its_target_name(packages):
+    ddrive, _ = packages
+    with open(os.path.join(ddrive, "CMakeLists.txt"), "w", encoding="utf-8") as stream:
+        stream.write("cmake_minimum_required(VERSION 3.0.2)\nproject(diff_drive)\n"
+                     "# add_executable(old_flip src/old.cpp)\n"
+                     "add_executable(${PROJECT_NAME}_flipper src/flipper.cpp)\n"
+                     "add_executable( drive_square src/square.cpp src/util.cpp)\n"
+                     "target_link_libraries(drive_square ${catkin_LIBRARIES})\n")
+    assert layout_checks.built_nodes(ddrive) == ["diff_drive_flipper", "drive_square"]
+    found = instructions.node_started_by_hand([], "diff_drive", "flip",
+                                              layout_checks.built_nodes(ddrive))
+    assert found == "diff_drive_flipper"
+    os.remove(os.path.join(ddrive, "CMakeLists.txt"))
+    assert layout_checks.built_nodes(ddrive) == []
 
 
 def test_numbers_written_into_the_xacro_fail_the_yaml_check(packages, spec):
