@@ -110,7 +110,8 @@ def flip(course, scenario: str) -> Dict:
     return {"checks": {"flips": [
         check("flips over", counter.flips >= spec["min_flips"],
               f"'{model}' flipped {counter.flips} times in {span:.1f} s of simulated time "
-              f"(at least {spec['min_flips']}), from its true orientation"),
+              f"(at least {spec['min_flips']}), from its true orientation",
+              value=max(0, spec["min_flips"] - counter.flips)),
         check("keeps driving", travel >= spec["min_travel"],
               f"travelled {travel:.1f} m in truth (at least {spec['min_travel']:g})"),
     ]}, "notes": {"flips": [f"{len(samples)} ground-truth samples; up axis z from "
@@ -272,7 +273,8 @@ def step(course, scenario: str) -> Dict:
         check("answers SUCCESS", code == SUCCESS, f"step to {target} answered code {code} '{text}'"),
         check("the gripper ends at the target", error <= spec["tolerance"],
               f"true gripper point ({', '.join(f'{v:.3f}' for v in reached)}) in {base}, "
-              f"{1000 * error:.1f} mm from the target (at most {1000 * spec['tolerance']:g})")]
+              f"{1000 * error:.1f} mm from the target (at most {1000 * spec['tolerance']:g})",
+              value=error)]
     return {"checks": {"step_floor_error": floor_checks, "step_reachable": reach_checks},
             "notes": {"step_floor_error": [f"request fields set: {', '.join(fields)}; "
                                            f"gripper frame {tip} of model '{model_name}'"]}}

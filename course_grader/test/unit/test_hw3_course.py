@@ -8,6 +8,7 @@ import pytest
 from course_grader import course as course_file
 from course_grader import grader
 from course_grader.course import CourseError
+from course_grader.results import Check, judge
 
 
 @pytest.fixture(scope="module")
@@ -23,6 +24,44 @@ def test_items_points_and_scenarios(hw3):
     assert hw3.total_points == pytest.approx(10.0)
     assert hw3.packages == ["diff_drive", "arm_move"]
     assert hw3.scenarios() == ["layout", "world", "flip", "arm_test", "step"]
+
+
+def item_of(course, item_id):
+    return next(item for item in course.items if item.id == item_id)
+
+
+def test_checks_beyond_the_assignments_sentences_are_notes(hw3):
+    layout = judge(item_of(hw3, "layout"), [
+        Check("diff_drive's folders", True, "diff_drive has config, urdf, ..."),
+        Check("a node in nodes/", False, "no file in diff_drive/nodes that rosrun can run"),
+        Check("diff_drive's files", True, "x"), Check("arm_move's files", True, "y")])
+    assert layout.awarded == pytest.approx(0.5)
+    assert any("not scored" in note and "nodes" in note for note in layout.beyond)
+    description = judge(item_of(hw3, "xacro_yaml_gazebo"), [
+        Check("a xacro reads a yaml", True, "x"), Check("a .gazebo file the xacro includes",
+                                                        True, "y"),
+        Check("the robot's xacro expands", True, "z"),
+        Check("the diff drive plugin", False, "no libgazebo_ros_diff_drive.so"),
+        Check("every drawn link has collision and inertial", False, "wheel lacks inertial")])
+    assert description.awarded == pytest.approx(1.0)
+    assert len([n for n in description.beyond if "not scored" in n]) == 2
+
+
+@pytest.mark.parametrize("flips, share", [(5, 1.0), (4, 1.0), (3, 0.75), (2, 0.5), (0, 0.0)])
+def test_flips_counted_score_on_the_scale(hw3, flips, share):
+    flipped = judge(item_of(hw3, "flips"), [
+        Check("flips over", flips >= 4, f"flipped {flips} times", max(0, 4 - flips)),
+        Check("keeps driving", True, "travelled 5 m")])
+    assert flipped.awarded == pytest.approx(2.0 * (share + 1.0) / 2)
+
+
+@pytest.mark.parametrize("error, share", [(0.0002, 1.0), (0.01, 1.0), (0.03, 0.5),
+                                          (0.05, 0.0), (0.2, 0.0)])
+def test_the_gripper_distance_scores_on_the_scale(hw3, error, share):
+    reached = judge(item_of(hw3, "step_reachable"), [
+        Check("answers SUCCESS", True, "code 1"),
+        Check("the gripper ends at the target", error <= 0.01, f"{error} m", error)])
+    assert reached.awarded == pytest.approx(2.0 * (share + 1.0) / 2)
 
 
 def test_commands_are_what_the_student_types(hw3):
