@@ -31,10 +31,14 @@ START = (-0.434, -1.323)   # m: the launch's default spawn position (the taped s
 SPAWN_LIMIT = 90           # s (wall): the first start, rviz-free, on a busy machine
 RELAUNCH_LIMIT = 10        # s (wall): the issue's bound from the second roslaunch to the robot
 TOPIC_LIMIT = 30           # s (wall): a message on /odom or /scan
+# the /gazebo services the workspace's clients call (spawn_model and its -wait, -J and
+# -unpause, the grader's probes, the rotate service's tests, controller spawners' worlds)
 SPAWN_SERVICES = ("/gazebo/spawn_urdf_model", "/gazebo/spawn_sdf_model",
                   "/gazebo/get_model_state", "/gazebo/unpause_physics",
-                  "/gazebo/set_model_configuration", "/gazebo/get_world_properties",
-                  "/gazebo/delete_model")
+                  "/gazebo/pause_physics", "/gazebo/set_model_configuration",
+                  "/gazebo/get_world_properties", "/gazebo/get_model_properties",
+                  "/gazebo/get_physics_properties", "/gazebo/get_link_state",
+                  "/gazebo/set_model_state", "/gazebo/delete_model")
 
 
 def master_of(env):
@@ -123,3 +127,10 @@ def test_a_killed_simulator_relaunches_on_the_same_master(master, results_dir):
             assert "success" in call.stdout, call.stdout
             turned = math.degrees(math.remainder(true_pose(master)[2] - yaw, 2 * math.pi))
             assert abs(turned - 90.0) < 2.0, turned
+            # spawn_model's later calls (-wait: get_world_properties, -unpause) reach the
+            # new simulator, in a namespace of its own so that nothing above hears it
+            more = run(master, "rosrun", "gazebo_ros", "spawn_model", "-urdf", "-param",
+                       "robot_description", "-model", "second", "-robot_namespace", "second",
+                       "-x", "1.5", "-y", "-1.3", "-wait", "my_rb1", "-unpause",
+                       "-timeout", "10")
+            assert more.returncode == 0, more.stdout + more.stderr

@@ -159,8 +159,17 @@ def package_to_model(xml: str) -> str:
     return re.sub(r"package://", "model://", xml)
 
 
+def answering_proxy(service: str, kind, timeout: float) -> rospy.ServiceProxy:
+    """A proxy of ``service`` once it answers (see service_answers): after a relaunch, the
+    dead simulator's registrations of the other services may outlive the spawn service's."""
+    _wait(lambda: service_answers(service), f"service {service} is not available", timeout,
+          SERVICE_POLL_PERIOD)
+    return rospy.ServiceProxy(service, kind)
+
+
 def wait_for_model(namespace: str, model: str, timeout: float) -> None:
-    properties = rospy.ServiceProxy(f"{namespace}/get_world_properties", GetWorldProperties)
+    properties = answering_proxy(f"{namespace}/get_world_properties", GetWorldProperties,
+                                 timeout)
     _wait(lambda: model in properties().model_names,
           f"model '{model}' did not appear", timeout)
 
@@ -198,13 +207,13 @@ def spawn(args: argparse.Namespace) -> None:
         raise SpawnError(response.status_message)
     rospy.loginfo(f"spawn_model: {response.status_message}")
     if joints:
-        configured = rospy.ServiceProxy(f"{namespace}/set_model_configuration",
-                                        SetModelConfiguration)(
+        configured = answering_proxy(f"{namespace}/set_model_configuration",
+                                     SetModelConfiguration, args.timeout)(
             args.model, "", [name for name, _ in joints], [value for _, value in joints])
         if not configured.success:
             raise SpawnError(configured.status_message)
     if args.unpause:
-        rospy.ServiceProxy(f"{namespace}/unpause_physics", Empty)()
+        answering_proxy(f"{namespace}/unpause_physics", Empty, args.timeout)()
 
 
 def stay_then_delete(args: argparse.Namespace, stop: StopSignals) -> None:
