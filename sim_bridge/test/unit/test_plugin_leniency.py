@@ -122,3 +122,22 @@ def test_every_unreadable_value_is_named_with_the_default_used(world, bus):
     run(world, 0.1)
     message = bus.published["/ground_truth"][-1]
     assert abs(message.pose.pose.position.z - world.pose("r")[0][2]) < 1e-6  # no offset, no noise
+
+
+UNREADABLE_IMU = f"""<robot name="r">{BASE}<gazebo reference="base">
+  <sensor name="imu" type="imu"><update_rate>fast</update_rate>
+  <plugin name="imu" filename="libgazebo_ros_imu_sensor.so"><topicName>imu</topicName>
+  <xyzOffset>0 0</xyzOffset><rpyOffset>zero 0 0</rpyOffset></plugin></sensor></gazebo></robot>"""
+
+
+def test_an_imu_with_unreadable_offsets_and_rate_runs_on_its_defaults(world, bus):
+    world.spawn_urdf("r", UNREADABLE_IMU, (0, 0, 0.1))
+    assert not [w for w in bus.warnings if "not loaded" in w]
+    named = {tag: w for w in bus.warnings for tag in ("xyzOffset", "rpyOffset", "update_rate")
+             if f"<{tag}>" in w}
+    assert "'0 0' is not three numbers" in named["xyzOffset"]
+    assert "'zero 0 0' is not three numbers" in named["rpyOffset"]
+    assert "'fast' is not a rate in Hz" in named["update_rate"]
+    run(world, 0.5)
+    message = bus.published["/imu"][-1]
+    assert abs(message.linear_acceleration.z - 9.8) < 0.2  # at rest, level: +g, no rotation

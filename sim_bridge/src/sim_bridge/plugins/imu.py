@@ -16,6 +16,7 @@ import pybullet as pb
 from sensor_msgs.msg import Imu
 
 from sim_bridge.plugins.base import Plugin, PluginError, Rate, stamp
+from sim_bridge.plugins.body_state import vector3
 from sim_bridge.poses import pose6_to_position_quaternion, quaternion_from_rpy, quaternion_matrix
 
 
@@ -29,17 +30,29 @@ class ImuSensor(Plugin):
         pose_text = sensor.element.findtext("pose")
         pose = [float(v) for v in pose_text.split()] if pose_text else [0.0] * 6
         position, orientation = pose6_to_position_quaternion(pose)
-        offset = [float(v) for v in (self.param("xyzOffset", "0 0 0") or "0 0 0").split()]
-        rpy = [float(v) for v in (self.param("rpyOffset", "0 0 0") or "0 0 0").split()]
+        offset = vector3(self, "xyzOffset")
+        rpy = vector3(self, "rpyOffset")
         self.mount = pb.multiplyTransforms(position, orientation, offset, quaternion_from_rpy(*rpy))
-        rate_text = sensor.element.findtext("update_rate")
-        rate = self.number("updateRateHZ", float(rate_text) if rate_text else 0.0)
+        rate = self.number("updateRateHZ", self._update_rate(sensor))
         self.rate = Rate(rate)
         self.noise = self.number("gaussianNoise", 0.0)
         self.frame_id = self.frame(self.param("frameName", self.link))
         self.output = context.bus.publisher(self.topic(self.param("topicName", "imu")), Imu,
                                             queue_size=1)
         self._last = None  # (time ns, velocity of the sensor point in the world)
+
+    def _update_rate(self, sensor) -> float:
+        """The sensor's <update_rate> (0, every step, when absent or unreadable: Gazebo's
+        SDF parser reports such a value and keeps the default)."""
+        text = (sensor.element.findtext("update_rate") or "").strip()
+        if not text:
+            return 0.0
+        try:
+            rate = float(text)
+        except ValueError:
+            rate = float("nan")
+        return rate if np.isfinite(rate) and rate >= 0 else \
+            self.unreadable("update_rate", text, "a rate in Hz", 0.0)
 
     def _sensor_state(self):
         robot = self.context.robot
