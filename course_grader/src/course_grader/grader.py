@@ -7,6 +7,7 @@ import importlib
 import os
 import tempfile
 import time
+import traceback
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 from typing import Callable, Dict, List, Optional, Tuple
@@ -84,10 +85,11 @@ def call_named(target: str, *args):
     """Calls ``module:function`` (a course file names its measuring functions so)."""
     module_name, _, function = target.partition(":")
     try:
-        return getattr(importlib.import_module(module_name), function)(*args)
+        named = getattr(importlib.import_module(module_name), function)
     except (ImportError, AttributeError) as error:
         raise CourseError(f"the course names '{target}', which cannot be loaded: {error}") \
             from error
+    return named(*args)     # what it raises is its own (not a course file's error)
 
 
 def scenario_results(course: Course, scenario: str, env: Dict[str, str],
@@ -234,7 +236,15 @@ def runner_results(course: Course, scenario: str, context: RunnerContext) -> Lis
     except CourseError:
         raise
     except Exception as error:  # pylint: disable=broad-except
-        answer = {"error": f"{type(error).__name__}: {error}"}
+        # a runner answers with checks whatever the submission holds: an exception out of
+        # it is the grader's own fault, marked "platform" (nothing scored against the student)
+        where = traceback.extract_tb(error.__traceback__)[-1]
+        fault = (f"the grader's {scenario} runner raised {type(error).__name__}: {error} "
+                 f"({os.path.basename(where.filename)}:{where.lineno})")
+        results = [failed_item(item, fault, [], time.monotonic() - started) for item in items]
+        for result in results:
+            result.platform = fault
+        return results
     seconds = time.monotonic() - started
     if "error" in answer:
         return [failed_item(item, answer["error"], answer.get("log", []), seconds)

@@ -8,7 +8,7 @@ import pytest
 from course_grader import course as course_file
 from course_grader import grader
 from course_grader.course import CourseError
-from course_grader.results import Check, judge
+from course_grader.results import Check, Report, judge
 
 
 @pytest.fixture(scope="module")
@@ -120,3 +120,21 @@ def test_malformed_scenarios_are_named(tmp_path, scenarios, message):
 def test_a_runner_that_cannot_be_loaded_is_a_course_error():
     with pytest.raises(CourseError, match="no_such_module:run"):
         grader.call_named("course_grader.no_such_module:run")
+
+
+def broken_runner(course, scenario, context):
+    """A runner with a bug of the grader's own."""
+    return {"checks": {"a": [context.missing_attribute]}}
+
+
+def test_an_exception_out_of_a_runner_is_the_platforms_fault(tmp_path):
+    path = tmp_path / "bad.yaml"
+    path.write_text(textwrap.dedent(BASE) +
+                    "scenarios: {s: {runner: 'test_hw3_course:broken_runner'}}\n")
+    course = course_file.parse(str(path))
+    context = grader.RunnerContext({}, str(tmp_path), None, str(tmp_path / "log"))
+    (result,) = grader.runner_results(course, "s", context)
+    assert result.awarded == 0.0 and result.mark == "platform"
+    assert "AttributeError" in result.platform and "test_hw3_course.py" in result.platform
+    report = Report(course, "x", [result])
+    assert report.incomplete and report.possible == 0.0
