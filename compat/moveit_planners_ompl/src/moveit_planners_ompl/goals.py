@@ -157,7 +157,7 @@ def pose_goals(scene: PlanningScene, group: str, start: Mapping[str, float],
                wanted: int = GOAL_SAMPLES) -> Goals:
     """Goal states of a position (and orientation) constraint, sampled by IK."""
     if solver is None:
-        raise GoalError(MoveItErrorCodes.NO_IK_SOLUTION,
+        raise GoalError(MoveItErrorCodes.PLANNING_FAILED,
                         f"group '{group}' has no kinematics solver: a pose goal cannot be "
                         "sampled (give robot_description_kinematics an entry for it)")
     links = {c.link_name for c in constraints.position_constraints} | \

@@ -11,11 +11,12 @@ In order, as the pipeline runs:
   FixStartStateCollision: a start in collision is jiggled (``jiggle_fraction`` of each
   joint's range, 100 tries) to a free state nearby, else START_STATE_IN_COLLISION;
 - each goal constraint set (alternatives) gives goal states (:mod:`goals`): a joint goal
-  outside the bounds is INVALID_GOAL_CONSTRAINTS, a pose goal no IK reaches
-  NO_IK_SOLUTION, goals whose every state collides GOAL_IN_COLLISION;
+  outside the bounds is INVALID_GOAL_CONSTRAINTS; a pose goal no IK reaches, or goals whose
+  every state collides, are PLANNING_FAILED, as MoveIt's OMPL context answers every solve
+  that fails (the message says which: users' tests assert -1 for both);
 - the straight joint-space line to the nearest goal when it is free, else the group's OMPL
-  planner (``ompl_planning.yaml``) within ``allowed_planning_time`` (TIMED_OUT when it
-  finds nothing), its path simplified and interpolated;
+  planner (``ompl_planning.yaml``) within ``allowed_planning_time`` (PLANNING_FAILED when
+  it finds nothing), its path simplified and interpolated;
 - the whole path checked again four times more finely than motions were checked while
   planning; where that finds a collision the planning resolution stepped over, the search
   runs again at the finer resolution while time is left (else INVALID_MOTION_PLAN);
@@ -261,9 +262,9 @@ class OmplPlanner:
             return states
         if found.collisions:
             a, b = found.collisions[0]
-            return PlanResult(Codes.GOAL_IN_COLLISION, f"every goal state collides ({a} "
+            return PlanResult(Codes.PLANNING_FAILED, f"every goal state collides ({a} "
                               f"touches {b})")
-        return PlanResult(Codes.NO_IK_SOLUTION, "no IK solution reaches the goal within the "
+        return PlanResult(Codes.PLANNING_FAILED, "no IK solution reaches the goal within the "
                           "joint bounds" + ("" if not found.ik_solutions else
                                             " and its constraints"))
 
@@ -313,7 +314,7 @@ class OmplPlanner:
         setup.setPlanner(self.configs.make(planning, information))
         setup.solve(seconds)
         if not setup.haveExactSolutionPath():
-            return PlanResult(Codes.TIMED_OUT, f"{planning.planner} found no path within "
+            return PlanResult(Codes.PLANNING_FAILED, f"{planning.planner} found no path within "
                               f"{seconds:.2f} s")
         setup.simplifySolution(max(0.01, seconds / 4))
         solution = setup.getSolutionPath()

@@ -141,7 +141,7 @@ class PlanningExecution(unittest.TestCase):
         constraint.constraint_region.primitive_poses = [inside]
         goal.request.goal_constraints = [Constraints(position_constraints=[constraint])]
         goal.planning_options.plan_only = True
-        self.assertEqual(self.run_goal(goal).error_code.val, Codes.GOAL_IN_COLLISION)
+        self.assertEqual(self.run_goal(goal).error_code.val, Codes.PLANNING_FAILED)
         bad = PlanningScene(is_diff=True)
         bad.world.collision_objects = [box("flat", (0, 0, 0), (0.1, 0.0, 0.1))]
         self.assertFalse(self.apply_scene(bad).success)
