@@ -43,7 +43,7 @@ from moveit_planners_ompl.planner_configs import PlannerConfigs
 from moveit_ros_move_group import cartesian_path, kinematics_service, scene_service
 from moveit_ros_move_group.context import ContextError, from_parameters
 from moveit_ros_move_group.execution import ExecutionSettings, TrajectoryExecutionManager
-from moveit_ros_move_group.planning_service import Planning, action_text_status
+from moveit_ros_move_group.planning_service import PLANNING_PLUGIN, Planning, action_text_status
 from moveit_ros_move_group.scene_monitor import SceneMonitor
 
 FAKE = "moveit_fake_controller_manager/MoveItFakeControllerManager"
@@ -74,8 +74,16 @@ def pipeline_parameters() -> Dict:
     pipelines = _private("planning_pipelines", {})
     if isinstance(pipelines, dict) and pipelines:
         chosen = _private("default_planning_pipeline", "ompl")
-        return pipelines.get(chosen) or next(iter(pipelines.values()))
-    return rospy.get_param("~", {})
+        parameters = pipelines.get(chosen) or next(iter(pipelines.values()))
+    else:
+        parameters = rospy.get_param("~", {})
+    plugin = parameters.get("planning_plugin", PLANNING_PLUGIN) if isinstance(parameters, dict) \
+        else PLANNING_PLUGIN
+    if plugin != PLANNING_PLUGIN:
+        # CHOMP, STOMP, Pilz: a config that chose one is planned with OMPL, and says so
+        rospy.logwarn("planning_plugin '%s' is not one this move_group has: planning with "
+                      "OMPL (%s) instead", plugin, PLANNING_PLUGIN)
+    return parameters
 
 
 def controller_manager():
