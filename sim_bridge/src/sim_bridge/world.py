@@ -564,7 +564,8 @@ class World:
                                 np.random.default_rng([self.seed, len(self.models)]),
                                 self.step_size, self.gravity, self.cast_rays, tf_prefix,
                                 self.model_of_body, model.structure,
-                                lambda body, name=name: self.applied_wrench(name, body))
+                                lambda body, name=name: self.applied_wrench(name, body),
+                                namespace_given=bool(namespace))
         try:
             model.plugins = create_plugins(context, tags)
         except Exception:

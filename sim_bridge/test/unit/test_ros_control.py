@@ -263,6 +263,23 @@ def test_diff_drive_controller_drives_and_integrates_its_encoders():
     world.close()
 
 
+def test_spawned_at_the_top_level_the_controller_manager_is_at_the_root():
+    """spawn_model sends its namespace, "/" at the top level, and gazebo_ros gives it to the
+    plugins that name none: /controller_manager, where a launch's spawner looks (ROSbot 2's
+    and the UR5's did not find theirs under the model's name)."""
+    with open(f"{DATA}/arm_bot_controllers.yaml", encoding="utf-8") as stream:
+        configuration = yaml.safe_load(stream)
+    bus = RecordingBus({f"/{name}": value for name, value in configuration.items()})
+    world = World(bus, ray_threads=1)
+    description = expand(f"{DATA}/arm_bot.urdf.xacro", {"arm_interface": "PositionJointInterface"})
+    world.spawn_urdf("ur", description.replace("<robotNamespace>/arm_bot</robotNamespace>", ""),
+                     namespace="/")
+    assert not [name for name in bus.services if name.startswith("/ur/")]
+    assert bus.services["/controller_manager/load_controller"](
+        LoadControllerRequest("arm_controller")).ok, bus.warnings
+    world.close()
+
+
 def test_without_a_robot_namespace_the_controllers_live_under_the_models_name():
     """gazebo_ros_control's default (Interbotix's arms name none): /<model>/controller_manager."""
     with open(f"{DATA}/arm_bot_controllers.yaml", encoding="utf-8") as stream:

@@ -147,6 +147,9 @@ class PluginContext:
     # starts now: world axes, the torque about its centre of mass (external_forces)
     applied_wrench: Callable[[str], Tuple[np.ndarray, np.ndarray]] = \
         lambda body: (np.zeros(3), np.zeros(3))
+    # the spawn request named a namespace, "/" included (spawn_model sends its own, "/" at
+    # the top level; gazebo_ros then gives it to every plugin that names none)
+    namespace_given: bool = False
 
 
 def resolve_topic(namespace: str, topic: str) -> str:

@@ -1,8 +1,9 @@
 """``libgazebo_ros_control.so``: ros_control's controller manager, emulated.
 
 Plugin parameters as gazebo_ros_control's: ``robotNamespace`` (where the controller manager
-and the controllers live; without it, and without spawn_model's -robot_namespace, the
-model's name, as gazebo_ros_control's default), ``controlPeriod`` (seconds; default the physics step),
+and the controllers live; without it, the spawn request's namespace (spawn_model sends
+"/" at the top level), and for a model spawned with none the model's name, as
+gazebo_ros_control's default), ``controlPeriod`` (seconds; default the physics step),
 ``robotParam`` and ``legacyModeNS`` (accepted; the spawned model's own description is used),
 ``robotSimType`` (DefaultRobotHWSim's behaviour; another class is named in a warning),
 ``eStopTopic`` (named in a warning: the emergency stop is not emulated).
@@ -99,8 +100,10 @@ class RosControl(Plugin):
             raise PluginError(f"plugin '{spec.name}' (libgazebo_ros_control.so): model "
                               f"'{context.model_name}' has no <transmission>, so no joint to "
                               "control")
-        if not context.namespace and not spec.text("robotNamespace"):
-            # gazebo_ros_control's own default (its other plugins' is none): the model's name
+        if not context.namespace_given and spec.text("robotNamespace") is None:
+            # gazebo_ros_control's own default (its other plugins' is none): the model's name;
+            # a robot spawned by spawn_model at the top level has "/" from the spawn request,
+            # so its controller manager is /controller_manager, as in Gazebo
             self.namespace = context.model_name.strip("/")
         self.hardware = RobotHardware(context, transmissions)
         self.param("robotParam")  # the spawned model's own description is used
