@@ -23,7 +23,9 @@ ARM = ["waist", "shoulder", "elbow", "wrist_angle"]
 TIP = "px100/ee_gripper_link"
 START_LIMIT = 60.0       # s (wall): move_group's actions answering after roslaunch
 MOVER_LIMIT = 240.0      # s (wall): the mover's whole run
-GOAL_IN_COLLISION, NO_IK_SOLUTION = -12, -31
+# MoveIt's OMPL context answers every failed solve PLANNING_FAILED: a goal inside a box and
+# one out of reach alike (students' tests assert it)
+PLANNING_FAILED = -1
 
 
 def run_mover(env, log_path):
@@ -66,9 +68,9 @@ def check_steps(steps, env):
     reached, positions = true_gripper(env, urdf)
     error = np.linalg.norm(reached - np.array(steps["pose"]["target"]))
     assert error < 0.01, f"the gripper is {error * 1000:.1f} mm from the target ({positions})"
-    assert not steps["in_box"]["ok"] and steps["in_box"]["code"] == GOAL_IN_COLLISION
+    assert not steps["in_box"]["ok"] and steps["in_box"]["code"] == PLANNING_FAILED
     assert steps["in_box"]["objects"] == ["block"]
-    assert not steps["far"]["ok"] and steps["far"]["code"] == NO_IK_SOLUTION
+    assert not steps["far"]["ok"] and steps["far"]["code"] == PLANNING_FAILED
     return error
 
 
