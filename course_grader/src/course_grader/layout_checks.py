@@ -69,8 +69,7 @@ def runnable_nodes(package: str) -> List[str]:
     nodes = os.path.join(package, "nodes")
     if not os.path.isdir(nodes):
         return []
-    cmake = os.path.join(package, "CMakeLists.txt")
-    text = re.sub(r"#[^\n]*", "", _read(cmake)) if os.path.isfile(cmake) else ""
+    text = _cmake_text(package)
     relayed = {os.path.normpath(p) for group in INSTALL_PYTHON.findall(text)
                for p in group.split()}
     return [name for name in sorted(os.listdir(nodes))
@@ -88,14 +87,19 @@ PROJECT = re.compile(r"\bproject\s*\(\s*([^\s)]+)", re.IGNORECASE)
 def built_nodes(package: str) -> List[str]:
     """The executables ``package``'s CMakeLists.txt builds (``add_executable``): C++ nodes,
     which ``rosrun`` runs by their target names."""
-    cmake = os.path.join(package, "CMakeLists.txt")
-    if not os.path.isfile(cmake):
+    text = _cmake_text(package)
+    if not text:
         return []
-    text = re.sub(r"#[^\n]*", "", _read(cmake))
     project = PROJECT.search(text)
     name = project.group(1) if project else os.path.basename(os.path.normpath(package))
     return sorted({target.replace("${PROJECT_NAME}", name)
                    for target in ADD_EXECUTABLE.findall(text)})
+
+
+def _cmake_text(package: str) -> str:
+    """``package``'s CMakeLists.txt without its comments ("" when it has none)."""
+    cmake = os.path.join(package, "CMakeLists.txt")
+    return re.sub(r"#[^\n]*", "", _read(cmake)) if os.path.isfile(cmake) else ""
 
 
 def _files_present(package: str, folder: str, files: List[str]) -> Dict:

@@ -193,7 +193,7 @@ def spawn(args: argparse.Namespace) -> None:
         xml = package_to_model(xml)
     service = f"{namespace}/spawn_{'urdf' if args.urdf else 'sdf'}_model"
     try:
-        _wait(lambda: service_answers(service), "", args.timeout, SERVICE_POLL_PERIOD)
+        spawner = answering_proxy(service, SpawnModel, args.timeout)
     except SpawnError:
         raise SpawnError(f"service {service} not available after {args.timeout:g} s; is the "
                          "simulator (gazebo_ros's empty_world.launch) running?") from None
@@ -201,8 +201,8 @@ def spawn(args: argparse.Namespace) -> None:
         wait_for_model(namespace, args.wait, args.timeout)
     robot_namespace = rospy.get_namespace() if args.robot_namespace is None \
         else args.robot_namespace
-    response = rospy.ServiceProxy(service, SpawnModel)(
-        args.model, xml, robot_namespace, initial_pose(args), args.reference_frame)
+    response = spawner(args.model, xml, robot_namespace, initial_pose(args),
+                       args.reference_frame)
     if not response.success:
         raise SpawnError(response.status_message)
     rospy.loginfo(f"spawn_model: {response.status_message}")

@@ -445,14 +445,11 @@ class _Checks:
         self.radii = np.array([b.radius for b in self.bodies])
         # a pair with a box: the other body's sphere against the box (tighter than two
         # spheres around a table); ``sphere`` and ``boxed`` are the pair's bodies so ordered
-        boxed = [b.box is not None or a.box is not None for a, b in self.pairs]
-        self.with_box = np.array(boxed, dtype=bool)
-        self.two_boxes = np.array([a.box is not None and b.box is not None
-                                   for a, b in self.pairs], dtype=bool)
-        self.sphere = np.where([b.box is not None for _, b in self.pairs], self.first,
-                               self.second)
-        self.boxed = np.where([b.box is not None for _, b in self.pairs], self.second,
-                              self.first)
+        first_box = np.array([a.box is not None for a, _ in self.pairs], dtype=bool)
+        second_box = np.array([b.box is not None for _, b in self.pairs], dtype=bool)
+        self.with_box, self.two_boxes = first_box | second_box, first_box & second_box
+        self.sphere = np.where(second_box, self.first, self.second)
+        self.boxed = np.where(second_box, self.second, self.first)
         self.box_poses = np.array([b.box[0] if b.box is not None else np.eye(4)
                                    for b in self.bodies]).reshape(-1, 4, 4)
         self.half_sizes = np.array([b.box[1] if b.box is not None else np.zeros(3)

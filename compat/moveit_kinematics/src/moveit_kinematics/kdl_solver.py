@@ -182,8 +182,7 @@ class KdlSolver:
         damping = DAMPING * np.eye(6)
         array = kdl.JntArray(len(self.joints))
         for _ in range(iterations):
-            for i, value in enumerate(q.tolist()):
-                array[i] = value
+            self._array(q.tolist(), array)
             self._fk.JntToCart(array, frame)
             twist = kdl.diff(frame, goal)          # in the base frame: (velocity, rotation)
             values = [twist[i] for i in range(6)]
@@ -211,8 +210,10 @@ class KdlSolver:
     def _range(bounds) -> tuple:
         return (bounds.lower, bounds.upper) if bounds.bounded else (-math.pi, math.pi)
 
-    def _array(self, values: Sequence[float]) -> kdl.JntArray:
-        array = kdl.JntArray(len(self.joints))
+    def _array(self, values: Sequence[float], into: Optional[kdl.JntArray] = None
+               ) -> kdl.JntArray:
+        """``values`` as a JntArray (``into``, when given: reused in a loop)."""
+        array = into if into is not None else kdl.JntArray(len(self.joints))
         for i, value in enumerate(values):
             array[i] = float(value)
         return array
