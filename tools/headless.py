@@ -5,6 +5,7 @@ Used by ``make demo`` and by the end-to-end tests in ``test/``:
 - :func:`virtual_display` starts Xvfb on a free display and waits until it answers;
 - :func:`private_master` picks a free port, so a run never meets another run's roscore;
 - :func:`roslaunch` starts a launch file with a log file and stops it (and its children);
+- :func:`run_while_node_lives` starts it again when its rviz died of a signal while starting;
 - :func:`stable_screenshot` waits until a window is drawn and its picture stops changing;
 - :func:`dark_pixels`, :func:`differing_pixels` and :func:`pixels_near` measure
   screenshots with ImageMagick.
@@ -16,14 +17,17 @@ from __future__ import annotations
 import contextlib
 import fcntl
 import os
+import re
 import shutil
 import signal
 import socket
 import subprocess
 import tempfile
 import time
-from typing import Dict, Iterator, List, Optional, Sequence
+from typing import Callable, Dict, Iterator, List, Optional, Sequence, TypeVar
 
+
+T = TypeVar("T")
 
 # rows at the bottom of the screen left out when waiting for a still picture
 STATUS_BAR_ROWS = 40
@@ -158,6 +162,43 @@ def roslaunch(arguments: Sequence[str], env: Dict[str, str], log_path: str) -> I
         yield launch
     finally:
         launch.stop()
+
+
+# roslaunch's words for a node that died of a signal (a negative exit code); a required
+# node's death reads "REQUIRED process [rviz-4] has died!" then "process has died [pid ...",
+# another's "[rviz-4] process has died [pid ..." (roslaunch/pmon.py)
+_SIGNAL_DEATH = r"\[{node}-\d+\](?: has died!\s*| )process has died \[pid \d+, exit code -\d+"
+
+
+def died_of_signal(output: str, node: str) -> bool:
+    """True when a launch's ``output`` says that its node ``node`` was killed by a signal."""
+    return re.search(_SIGNAL_DEATH.format(node=re.escape(node)), output) is not None
+
+
+# Debian's rviz, drawing in software under Xvfb, now and then aborts while it starts: a heap
+# fault ("free(): invalid next size") in one CI run, Qt's "could not connect to display"
+# with Xvfb answering in one of 30 starts here. Three starts make that one in thousands.
+RVIZ_STARTS = 3
+
+
+def run_while_node_lives(arguments: Sequence[str], env: Dict[str, str], log_path: str,
+                         body: Callable[[Launch], T], node: str = "rviz",
+                         starts: int = RVIZ_STARTS) -> T:
+    """Runs ``body(launch)`` with ``roslaunch <arguments>`` up and returns what it returns.
+    When it fails and the launch's ``node`` died of a signal meanwhile, says so and starts
+    the launch again (logs ``<log>``, ``<log stem>-2<ext>``, ...), up to ``starts`` times;
+    any other failure is raised at once."""
+    stem, extension = os.path.splitext(log_path)
+    for start in range(1, starts + 1):
+        log = log_path if start == 1 else f"{stem}-{start}{extension}"
+        with roslaunch(arguments, env, log) as launch:
+            try:
+                return body(launch)
+            except Exception:  # re-raised unless the node crashed
+                if start == starts or not died_of_signal(launch.output(), node):
+                    raise
+        print(f"{node} died of a signal (see {log}); starting the launch again", flush=True)
+    raise AssertionError("unreachable: the last start returns or raises")
 
 
 def window_mapped(display: str, title: str) -> bool:

@@ -19,8 +19,8 @@ def call(env, *arguments):
 def test_services_answer_and_rviz_shows_the_arm(screen_env, results_dir, repo):
     log = os.path.join(results_dir, "arm.log")
     shot = os.path.join(results_dir, "arm_rviz.png")
-    with headless.roslaunch(["arm_move", "arm.launch", "use_fake:=true"], screen_env,
-                            log) as launch:
+
+    def services_then_picture(launch):
         headless.wait_until(lambda: "/px100/step" in subprocess.run(
             ["rosservice", "list"], env=screen_env, capture_output=True, text=True,
             check=False).stdout or not launch.running(), 90, "the mover's services")
@@ -32,6 +32,9 @@ def test_services_answer_and_rviz_shows_the_arm(screen_env, results_dir, repo):
                     "gripper_open: true}")
         assert "val: 1" in step, step
         headless.stable_screenshot(screen_env["DISPLAY"], shot, "RViz", launch)
+
+    headless.run_while_node_lives(["arm_move", "arm.launch", "use_fake:=true"], screen_env,
+                                  log, services_then_picture)
     grey = headless.pixels_near(shot, "rgb(140,140,150)", fuzz="8%")
     assert grey > ROBOT_PIXELS, f"{grey} pixels look like the robot's grey links"
     if os.environ.get("UPDATE_DOC_IMAGES") == "1":

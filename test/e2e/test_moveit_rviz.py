@@ -14,14 +14,17 @@ ROBOT_PIXELS = 300
 def test_rviz_starts_shows_the_robot_and_names_the_missing_plugin(screen_env, results_dir):
     log = os.path.join(results_dir, "xsarm_moveit.log")
     shot = os.path.join(results_dir, "moveit_rviz.png")
-    with headless.roslaunch(["interbotix_xsarm_moveit", "xsarm_moveit.launch",
-                             "robot_model:=px100", "dof:=4", "use_fake:=true"], screen_env,
-                            log) as launch:
+
+    def picture_and_output(launch):
         headless.wait_until(lambda: "You can start planning now!" in launch.output()
                             or not launch.running(), 90, "move_group")
         headless.stable_screenshot(screen_env["DISPLAY"], shot, "RViz", launch)
         assert launch.running(), launch.output()[-3000:]
-        output = launch.output()
+        return launch.output()
+
+    output = headless.run_while_node_lives(
+        ["interbotix_xsarm_moveit", "xsarm_moveit.launch", "robot_model:=px100", "dof:=4",
+         "use_fake:=true"], screen_env, log, picture_and_output)
     assert "moveit_rviz_plugin/MotionPlanning" in output, output[-3000:]
     grey = headless.pixels_near(shot, "rgb(140,140,150)", fuzz="8%")
     assert grey > ROBOT_PIXELS, f"{grey} pixels look like the robot's grey links"

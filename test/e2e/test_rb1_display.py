@@ -17,10 +17,9 @@ ROBOT_PIXELS = 20000
 def render(env, results_dir, name, *launch_args):
     log = os.path.join(results_dir, f"{name}.log")
     path = os.path.join(results_dir, f"{name}.png")
-    with headless.roslaunch(["my_rb1_description", "display.launch", "gui:=false",
-                             *launch_args], env, log) as launch:
-        headless.stable_screenshot(env["DISPLAY"], path, "RViz", launch)
-    return path
+    return headless.run_while_node_lives(
+        ["my_rb1_description", "display.launch", "gui:=false", *launch_args], env, log,
+        lambda launch: headless.stable_screenshot(env["DISPLAY"], path, "RViz", launch))
 
 
 def test_rviz_draws_the_robot(screen_env, results_dir, repo):
@@ -44,7 +43,8 @@ def joint_positions(env):
 def test_display_launch_as_typed_wheels_follow_the_sliders(screen_env, results_dir):
     display = screen_env["DISPLAY"]
     log = os.path.join(results_dir, "display.log")
-    with headless.roslaunch(["my_rb1_description", "display.launch"], screen_env, log) as launch:
+
+    def drag_the_first_slider(launch):
         for title in ("RViz", "Joint State Publisher"):
             headless.wait_until(lambda: headless.window_mapped(display, title)
                                 or not launch.running(), 90, f"the {title} window")
@@ -57,6 +57,9 @@ def test_display_launch_as_typed_wheels_follow_the_sliders(screen_env, results_d
         headless.wait_until(lambda: joint_positions(screen_env)["right_wheel_joint"] > 1.0, 30,
                             "right_wheel_joint to follow its slider")
         assert joint_positions(screen_env)["left_wheel_joint"] == 0.0
+
+    headless.run_while_node_lives(["my_rb1_description", "display.launch"], screen_env, log,
+                                  drag_the_first_slider)
 
 
 def test_a_malformed_model_stops_the_launch_naming_file_and_error(ros_env, results_dir):

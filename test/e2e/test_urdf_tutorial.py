@@ -9,7 +9,6 @@
   package's folder, and the default model is its first step.
 """
 import os
-import re
 import subprocess
 import xml.etree.ElementTree as ElementTree
 
@@ -103,40 +102,19 @@ def assert_tf_for_every_link(env):
     assert result.returncode == 0, f"no TF frame for some links: {result.stdout}{result.stderr}"
 
 
-# One CI run saw this launch end before rviz's picture settled (its log is lost; never seen
-# here). rviz is Debian's binary drawing in software: when it dies of a signal the launch is
-# started once more and the crash printed; any other early end fails at once.
-RVIZ_CRASH = re.compile(r"\[rviz-\d+\] process has died \[pid \d+, exit code -\d+")
-
-
-class RvizCrashed(RuntimeError):
-    """rviz died of a signal before its picture settled."""
-
-
-def render_once(env, log, path, launch_args, check):
-    with headless.roslaunch(["urdf_tutorial", "display.launch", *launch_args], env,
-                            log) as launch:
-        try:
-            headless.stable_screenshot(env["DISPLAY"], path, "RViz", launch, timeout=60)
-        except RuntimeError as error:
-            if RVIZ_CRASH.search(launch.output()):
-                raise RvizCrashed(str(error)) from error
-            raise
-        if check:
-            check(launch)
-    return path
-
-
 def render(env, results_dir, name, *launch_args, check=None):
     """Starts display.launch, waits for rviz's picture to settle, saves it as <name>.png;
     ``check(launch)`` runs while the launch is still up."""
     path = os.path.join(results_dir, f"{name}.png")
-    log = os.path.join(results_dir, f"{name}.log")
-    try:
-        return render_once(env, log, path, launch_args, check)
-    except RvizCrashed:
-        print(f"rviz crashed (see {log}); starting the launch again")
-    return render_once(env, log.replace(".log", "-again.log"), path, launch_args, check)
+
+    def picture(launch):
+        headless.stable_screenshot(env["DISPLAY"], path, "RViz", launch, timeout=60)
+        if check:
+            check(launch)
+        return path
+
+    return headless.run_while_node_lives(["urdf_tutorial", "display.launch", *launch_args],
+                                         env, os.path.join(results_dir, f"{name}.log"), picture)
 
 
 def test_relative_model_is_read_from_the_current_directory(screen_env, results_dir, robot_dir):

@@ -1,0 +1,95 @@
+"""tools/headless.py: a launch whose rviz died of a signal is started again, nothing else is."""
+import contextlib
+import os
+import sys
+
+import pytest
+from roslaunch import nodeprocess
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.abspath(__file__)))), "tools"))
+import headless  # noqa: E402  (tools/ is not a package)
+
+
+def death_line(name, exit_code, required):
+    """What roslaunch prints for a dead node: the process's own description of its end
+    (nodeprocess.LocalProcess) inside the process monitor's line for it (pmon)."""
+    process = nodeprocess.LocalProcess("run", "rviz", name, ["/usr/lib/rviz/rviz"], {}, False)
+    process.pid, process.exit_code = 42, exit_code
+    description = process.get_exit_description()
+    if required:
+        return "=" * 80 + f"REQUIRED process [{name}] has died!\n{description}\n"
+    return f"[{name}] {description}"
+
+
+@pytest.mark.parametrize("required", [True, False])
+def test_a_signal_death_is_recognised_required_or_not(required):
+    assert headless.died_of_signal(death_line("rviz-4", -6, required), "rviz")
+
+
+@pytest.mark.parametrize("name,exit_code,node", [
+    ("rviz-4", 1, "rviz"),          # an error exit, not a crash
+    ("rviz-4", 0, "rviz"),
+    ("rqt_gui-2", -11, "rviz"),     # another node
+    ("rviz2-3", -6, "rviz"),
+])
+def test_other_deaths_are_not_an_rviz_crash(name, exit_code, node):
+    assert not headless.died_of_signal(death_line(name, exit_code, True), node)
+    assert not headless.died_of_signal(death_line(name, exit_code, False), node)
+
+
+class FakeLaunch:
+    def __init__(self, output):
+        self._output = output
+
+    def output(self):
+        return self._output
+
+
+def fake_roslaunch(outputs, logs):
+    @contextlib.contextmanager
+    def start(arguments, env, log_path):
+        logs.append(log_path)
+        yield FakeLaunch(outputs[len(logs) - 1])
+    return start
+
+
+def test_a_crash_starts_the_launch_again_with_its_own_log(monkeypatch, capsys):
+    logs = []
+    crashed = death_line("rviz-4", -6, True)
+    monkeypatch.setattr(headless, "roslaunch", fake_roslaunch([crashed, crashed, ""], logs))
+
+    def body(launch):
+        if launch.output():
+            raise RuntimeError("roslaunch exited early")
+        return "picture"
+
+    assert headless.run_while_node_lives(["p", "x.launch"], {}, "/r/a.log", body) == "picture"
+    assert logs == ["/r/a.log", "/r/a-2.log", "/r/a-3.log"]
+    assert capsys.readouterr().out.count("rviz died of a signal") == 2
+
+
+def test_any_other_failure_is_raised_at_once(monkeypatch):
+    logs = []
+    monkeypatch.setattr(headless, "roslaunch", fake_roslaunch(
+        [death_line("rviz-4", 1, True)], logs))
+
+    def body(launch):
+        raise RuntimeError("roslaunch exited early")
+
+    with pytest.raises(RuntimeError):
+        headless.run_while_node_lives(["p", "x.launch"], {}, "/r/a.log", body)
+    assert logs == ["/r/a.log"]
+
+
+def test_the_last_crash_is_raised(monkeypatch):
+    logs = []
+    crashed = death_line("rviz-4", -6, False)
+    monkeypatch.setattr(headless, "roslaunch", fake_roslaunch([crashed] * 3, logs))
+
+    def body(launch):
+        raise headless.WaitTimeout("timed out waiting for a window titled 'RViz'")
+
+    with pytest.raises(headless.WaitTimeout):
+        headless.run_while_node_lives(["p", "x.launch"], {}, "/r/a.log", body)
+    assert len(logs) == headless.RVIZ_STARTS
