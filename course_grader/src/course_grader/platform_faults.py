@@ -19,9 +19,11 @@ REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
 PLATFORM_DIRS = ("sim_bridge", "compat", "courses", "urdf_tools", "course_grader", ".ws")
 FRAME = re.compile(r'^\s*File "([^"]+)", line (\d+)')
 MISSING = re.compile(r"Resource not found: ([A-Za-z0-9_]+)")
-# roslaunch's line for a node that ended on its own: "[rviz-3] process has died [pid 22396,
-# exit code -11, cmd /usr/lib/rviz/rviz -d ... __name:=rviz ...]"
-DIED = re.compile(r"\[([^\]]+)\] process has died \[pid \d+, exit code (-\d+), cmd (\S+)")
+# roslaunch's words for a node that ended on its own: "[rviz-3] process has died [pid 22396,
+# exit code -11, cmd /usr/lib/rviz/rviz -d ... __name:=rviz ...]"; for a required node two
+# lines, "REQUIRED process [rviz-3] has died!" then "process has died [pid 22396, ..."
+DIED = re.compile(r"(?:\[([^\]]+)\] )?process has died \[pid \d+, exit code (-\d+), cmd (\S+)")
+REQUIRED_DIED = re.compile(r"REQUIRED process \[([^\]]+)\] has died!")
 SYSTEM_DIRS = ("/usr/", "/bin/", "/lib/")
 # a log this big is read from its end only
 TAIL_BYTES = 2_000_000
@@ -36,11 +38,19 @@ def killed_platform_program(lines: List[str]) -> Optional[str]:
     """The first platform program roslaunch saw killed by a signal: "rviz-3 (exit code
     -11, /usr/lib/rviz/rviz)"; None when there is none. A submission's own node that
     crashes is the submission's."""
+    required = None
     for line in lines:
+        required_match = REQUIRED_DIED.search(line)
+        if required_match:
+            required = required_match.group(1)
+            continue
         match = DIED.search(line)
         if not match:
             continue
         name, code, command = match.groups()
+        name, required = name or required, None
+        if name is None:
+            continue
         if _is_platform(command) or os.path.realpath(command).startswith(SYSTEM_DIRS):
             return f"{name} (exit code {code}, {command})"
     return None

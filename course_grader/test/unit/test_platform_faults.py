@@ -69,6 +69,22 @@ def test_a_platform_program_killed_by_a_signal_is_the_platforms(tmp_path):
     assert platform_faults.find(str(tmp_path), ["my_rb1_description"]) is None
 
 
+def test_a_required_platform_program_killed_by_a_signal_is_the_platforms(tmp_path):
+    """roslaunch words a required node's death on two lines (the last CI run's rviz, killed
+    by glibc's heap check under software rendering, as display.launch files mark it)."""
+    died = ("\x1b[31m" + "=" * 80 + "REQUIRED process [rviz-4] has died!\n"
+            "process has died [pid 18738, exit code {code}, cmd {cmd} -d x.rviz __name:=rviz]."
+            "\nInitiating shutdown!\n")
+    (tmp_path / "display.log").write_text(died.format(code=-6, cmd="/usr/lib/rviz/rviz"))
+    found = platform_faults.find(str(tmp_path), ["my_rb1_description"])
+    assert "killed by a signal: rviz-4 (exit code -6, /usr/lib/rviz/rviz)" in found
+    student = "/tmp/ws/src/my_rb1_ros/nodes/rotate_service"
+    (tmp_path / "display.log").write_text(died.format(code=-6, cmd=student))
+    assert platform_faults.find(str(tmp_path), ["my_rb1_ros"]) is None
+    (tmp_path / "display.log").write_text(died.format(code=1, cmd="/usr/lib/rviz/rviz"))
+    assert platform_faults.find(str(tmp_path), ["my_rb1_description"]) is None
+
+
 def test_a_scenario_the_platform_failed_is_run_once_more(tmp_path, monkeypatch):
     """The second run's results stand, saying that the first run failed and where its logs
     are; a run that failed for the submission's fault is not repeated."""

@@ -179,8 +179,11 @@ class Plugin:
     def __init__(self, context: PluginContext, spec: PluginSpec):
         self.context = context
         self.spec = spec
-        # as gazebo_ros: spawn_model's -robot_namespace overrides every plugin's own
-        self.namespace = (context.namespace or spec.text("robotNamespace") or "").strip("/")
+        # as gazebo_ros's spawn (walkChildAddRobotNamespace): the request's namespace goes to
+        # the plugins that name none; a plugin's own <robotNamespace> is kept ("/" is the top
+        # level). An empty one is read as the request's.
+        own = spec.text("robotNamespace")
+        self.namespace = (own.strip() if own and own.strip() else context.namespace).strip("/")
 
     # --- parameters -------------------------------------------------------------------
     def param(self, tag: str, default: Optional[str] = None) -> Optional[str]:
