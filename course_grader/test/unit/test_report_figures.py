@@ -4,6 +4,7 @@ its item or saying why there is none, report.json listing the files, the reasons
 before anything runs (a course without rviz, --only leaving it out), and the screenshot
 module on a virtual screen (a window drawn is kept, a window of one colour is not, a
 missing window is named)."""
+import fcntl
 import json
 import os
 import shutil
@@ -13,7 +14,7 @@ import time
 import pytest
 
 from course_grader import course as course_file
-from course_grader import grader, report, screenshot
+from course_grader import grader, report, ros_run, screenshot
 from course_grader.results import Check, Figure, Report, judge
 
 DRIVE = {"item": "cmd_vel_moves", "command": "/cmd_vel at 0.2 m/s for 3 s",
@@ -111,22 +112,43 @@ def display():
     if shutil.which("Xvfb") is None or screenshot.missing_tools():
         pytest.skip("Xvfb, x11-utils or imagemagick not installed (tools/setup.sh installs them)")
     read_end, write_end = os.pipe()
-    server = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0",
-                               "320x240x24", "-nolisten", "tcp"], pass_fds=(write_end,),
-                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    os.close(write_end)
-    deadline = time.monotonic() + XVFB_START
-    with os.fdopen(read_end) as announced:
-        number = announced.readline().strip()
+    # started and stopped under the grader's lock, as every Xvfb here: one stopping gives
+    # up its display's lock file before its socket, which a new one on that number loses
+    with open(ros_run.XVFB_START_LOCK, "a", encoding="utf-8") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        server = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0",
+                                   "320x240x24", "-nolisten", "tcp"], pass_fds=(write_end,),
+                                  stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        os.close(write_end)
+        deadline = time.monotonic() + XVFB_START
+        with os.fdopen(read_end) as announced:
+            number = announced.readline().strip()
     assert number.isdigit() and time.monotonic() < deadline, "Xvfb chose no display"
     yield f":{number}"
-    server.terminate()
-    server.wait(timeout=10)
+    with open(ros_run.XVFB_START_LOCK, "a", encoding="utf-8") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        server.terminate()
+        server.wait(timeout=10)
 
 
 def window(display, title, *options):
     return subprocess.Popen(["xmessage", "-display", display, "-title", title, *options],
-                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+
+
+def wait_for_window(display, title, process, deadline):
+    """Waits until ``process`` (an xmessage) has mapped its window titled ``title``; fails
+    saying what xmessage printed if it ended, or which windows the screen had."""
+    while screenshot.find_window(display, title) is None:
+        if process.poll() is not None:
+            pytest.fail(f"xmessage '{title}' ended ({process.returncode}): "
+                        f"{process.stderr.read()}")
+        if time.monotonic() > deadline:
+            tree = subprocess.run(["xwininfo", "-display", display, "-root", "-tree"],
+                                  capture_output=True, text=True, check=False)
+            pytest.fail(f"no window '{title}' on {display} after {WINDOW_START:g} s; the "
+                        f"screen has: {tree.stdout[-1500:]}{tree.stderr[-500:]}")
+        time.sleep(SHOT["interval"])
 
 
 def test_a_drawn_window_is_kept_and_a_missing_one_named(display, tmp_path):
@@ -135,6 +157,7 @@ def test_a_drawn_window_is_kept_and_a_missing_one_named(display, tmp_path):
     assert not shot.path and "no window titled 'Fake RViz' appeared within 0.5 s" in shot.why
     message = window(display, "Fake RViz", "the robot would be here")
     try:
+        wait_for_window(display, "Fake RViz", message, time.monotonic() + WINDOW_START)
         shot = screenshot.take(display, path, "Fake RViz", SHOT)
     finally:
         message.terminate()
@@ -154,13 +177,9 @@ def test_a_window_over_the_wanted_one_is_moved_beside_it_and_both_pictured(displ
     try:
         sliders = None
         deadline = time.monotonic() + WINDOW_START
-        while screenshot.find_window(display, "Fake RViz") is None:
-            assert time.monotonic() < deadline, "the first window did not show"
-            time.sleep(SHOT["interval"])
+        wait_for_window(display, "Fake RViz", main, deadline)
         sliders = window(display, "Sliders", "wheel")      # opens at 0, 0: over the first
-        while screenshot.find_window(display, "Sliders") is None:
-            assert time.monotonic() < deadline, "the second window did not show"
-            time.sleep(SHOT["interval"])
+        wait_for_window(display, "Sliders", sliders, deadline)
         path = str(tmp_path / "both.png")
         shot = screenshot.take(display, path, "Fake RViz", SHOT)
         first = screenshot.find_window(display, "Fake RViz")
@@ -180,6 +199,7 @@ def test_a_window_of_one_colour_is_no_picture(display, tmp_path):
     black = window(display, "Blank RViz", "-bg", "black", "-fg", "black", "-xrm",
                    "*borderWidth: 0", "-xrm", "*shadowWidth: 0", "     ")
     try:
+        wait_for_window(display, "Blank RViz", black, time.monotonic() + WINDOW_START)
         shot = screenshot.take(display, str(tmp_path / "blank.png"), "Blank RViz",
                                dict(SHOT, timeout=1.0))
     finally:
