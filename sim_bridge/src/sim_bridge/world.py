@@ -524,9 +524,12 @@ class World:
 
     # --- robots from URDF ---------------------------------------------------------------
     def spawn_urdf(self, name: str, xml: str, position: Sequence[float] = (0, 0, 0),
-                   orientation: Sequence[float] = (0, 0, 0, 1), namespace: str = "",
+                   orientation: Sequence[float] = (0, 0, 0, 1), namespace: str = "/",
                    joints: Optional[Mapping[str, float]] = None, source: str = "",
                    tf_prefix: str = "") -> Model:
+        """Spawns a URDF robot. ``namespace`` is the spawn request's robot_namespace: "/"
+        (spawn_model's at the top level) or another goes to the plugins naming none; ""
+        (a request naming none, a model of a world file) leaves them their own defaults."""
         if not name:
             raise SimError("the model needs a name")
         if name in self.models:

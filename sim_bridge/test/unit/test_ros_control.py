@@ -236,8 +236,9 @@ def test_diff_drive_controller_drives_and_integrates_its_encoders():
     from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec
     world.add_sdf_model(ModelSpec("ground", True, links=[
         LinkSpec("link", collisions=[ShapeSpec("plane")])]))
-    world.spawn_urdf("bot", expand(f"{DATA}/diff_bot.urdf.xacro", {"drive": "ros_control"}))
-    manager = "/bot/controller_manager"   # no robotNamespace: the model's name
+    world.spawn_urdf("bot", expand(f"{DATA}/diff_bot.urdf.xacro", {"drive": "ros_control"}),
+                     namespace="")
+    manager = "/bot/controller_manager"   # no robotNamespace, none requested: the model's
     assert bus.services[f"{manager}/load_controller"](LoadControllerRequest("base_controller")).ok
     assert bus.services[f"{manager}/switch_controller"](
         SwitchControllerRequest(start_controllers=["base_controller"], strictness=2)).ok
@@ -288,7 +289,8 @@ def test_without_a_robot_namespace_the_controllers_live_under_the_models_name():
     world = World(bus, ray_threads=1)
     description = expand(f"{DATA}/arm_bot.urdf.xacro", {"arm_interface": "PositionJointInterface"})
     assert "<robotNamespace>/arm_bot</robotNamespace>" in description
-    world.spawn_urdf("px_arm", description.replace("<robotNamespace>/arm_bot</robotNamespace>", ""))
+    world.spawn_urdf("px_arm", description.replace("<robotNamespace>/arm_bot</robotNamespace>", ""),
+                     namespace="")
     assert "/px_arm/controller_manager/load_controller" in bus.services
     assert bus.services["/px_arm/controller_manager/load_controller"](
         LoadControllerRequest("arm_controller")).ok, bus.warnings

@@ -39,8 +39,8 @@ ROVER = """<sdf version="1.6"><model name="rover"><pose>1 2 0.06 0 0 0</pose>
     <legacyMode>false</legacyMode>
     <leftJoint>left_wheel_hinge</leftJoint><rightJoint>right_wheel_hinge</rightJoint>
     <wheelSeparation>0.36</wheelSeparation><wheelDiameter>0.12</wheelDiameter>
-    <wheelTorque>5</wheelTorque><commandTopic>rover/cmd_vel</commandTopic>
-    <odometryTopic>rover/odom</odometryTopic><robotBaseFrame>chassis</robotBaseFrame>
+    <wheelTorque>5</wheelTorque><commandTopic>cmd_vel</commandTopic>
+    <odometryTopic>odom</odometryTopic><robotBaseFrame>chassis</robotBaseFrame>
   </plugin></model></sdf>"""
 
 PENDULUM = """<sdf version="1.6"><model name="pendulum">
@@ -66,6 +66,7 @@ def test_an_sdf_rover_drives_with_its_own_plugin(world, bus):
     (x0, y0, _), _ = world.pose("rover")
     twist = Twist()
     twist.linear.x = 0.3
+    # a world's model has no spawn request: the diff drive takes the model's name (Gazebo's)
     bus.subscriptions["/rover/cmd_vel"](twist)
     run(world, 2.0)
     (x1, y1, _), _ = world.pose("rover")

@@ -176,14 +176,32 @@ def wrench_stamped(now_ns: int, frame_id: str, force, torque) -> WrenchStamped:
 class Plugin:
     """Base of model plugins and sensor plugins."""
 
+    # Where a plugin's topics go when <robotNamespace> does not say (gazebo_plugins differ):
+    # the diff drive and joint state publisher (the GazeboRos class) take the model's name
+    # for an absent or empty tag; the laser and cameras (the GetRobotNamespace helper) for an
+    # empty one; gazebo_ros_control and the IMU sensor for an absent one; every other plugin
+    # reads both as the top level.
+    ABSENT_NAMESPACE_IS_MODEL = False
+    EMPTY_NAMESPACE_IS_MODEL = False
+
     def __init__(self, context: PluginContext, spec: PluginSpec):
         self.context = context
         self.spec = spec
-        # as gazebo_ros's spawn (walkChildAddRobotNamespace): the request's namespace goes to
-        # the plugins that name none; a plugin's own <robotNamespace> is kept ("/" is the top
-        # level). An empty one is read as the request's.
-        own = spec.text("robotNamespace")
-        self.namespace = (own.strip() if own and own.strip() else context.namespace).strip("/")
+        self.namespace = self._namespace(spec.text("robotNamespace"))
+
+    def _namespace(self, own: Optional[str]) -> str:
+        """The plugin's namespace, without slashes at its ends ("" the top level). As
+        gazebo_ros's spawn service (walkChildAddRobotNamespace): a request naming a namespace
+        ("/" included, spawn_model's at the top level) gives it to the plugins that name
+        none; a plugin's own tag is kept."""
+        model = self.context.model_name.strip("/")
+        if own is None:
+            if self.context.namespace_given:
+                return self.context.namespace.strip("/")
+            return model if self.ABSENT_NAMESPACE_IS_MODEL else ""
+        if not own.strip():
+            return model if self.EMPTY_NAMESPACE_IS_MODEL else ""
+        return own.strip().strip("/")
 
     # --- parameters -------------------------------------------------------------------
     def param(self, tag: str, default: Optional[str] = None) -> Optional[str]:

@@ -124,6 +124,8 @@ class CameraView:
 
 
 class Camera(SensorPlugin):
+    EMPTY_NAMESPACE_IS_MODEL = True  # GazeboRosCameraUtils reads it by GetRobotNamespace
+
     """gazebo_ros_camera: sensor_msgs/Image and CameraInfo of a ``camera`` sensor."""
 
     # the topics' defaults (the depth cameras' differ)
@@ -319,6 +321,8 @@ class Head:
 
 
 class MultiCamera(Plugin):
+    EMPTY_NAMESPACE_IS_MODEL = True  # GazeboRosCameraUtils reads it by GetRobotNamespace
+
     """gazebo_ros_multicamera on a ``multicamera`` sensor, as gazebo_plugins does it: a
     camera whose name contains ``left`` publishes under ``<cameraName>/left`` with a
     baseline of 0, one whose name contains ``right`` under ``<cameraName>/right`` with the

@@ -36,6 +36,8 @@ TWIST_COVARIANCE = covariance(1e-5, 1e-5, 1e-3)
 
 
 class DiffDrive(DriveBase):
+    ABSENT_NAMESPACE_IS_MODEL = EMPTY_NAMESPACE_IS_MODEL = True  # gazebo_plugins' GazeboRos
+
     def __init__(self, context, spec):
         super().__init__(context, spec, spec.text("commandTopic", "cmd_vel"),
                          spec.text("odometryTopic", "odom"))

@@ -21,6 +21,8 @@ from sim_bridge.poses import pose6_to_position_quaternion, quaternion_from_rpy, 
 
 
 class ImuSensor(Plugin):
+    ABSENT_NAMESPACE_IS_MODEL = True  # gazebo_ros_imu_sensor: "/<model>/" when absent
+
     def __init__(self, context, spec, sensor):
         super().__init__(context, spec)
         self.link = sensor.link

@@ -12,6 +12,8 @@ from sim_bridge.plugins.base import Plugin, PluginError, Rate, stamp
 
 
 class JointStatePublisher(Plugin):
+    ABSENT_NAMESPACE_IS_MODEL = EMPTY_NAMESPACE_IS_MODEL = True  # gazebo_plugins' GazeboRos
+
     def __init__(self, context, spec):
         super().__init__(context, spec)
         names = [n.strip() for n in (self.param("jointName", "") or "").split(",") if n.strip()]

@@ -54,6 +54,8 @@ def _count(element, path: str, default: int, sensor: str) -> int:
 
 
 class Laser(SensorPlugin):
+    EMPTY_NAMESPACE_IS_MODEL = True  # gazebo_plugins' GetRobotNamespace
+
     def __init__(self, context, spec, sensor):
         super().__init__(context, spec, sensor)
         element = sensor.element

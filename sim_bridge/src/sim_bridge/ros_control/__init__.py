@@ -93,6 +93,11 @@ class Loaded:
 
 
 class RosControl(Plugin):
+    # gazebo_ros_control's own default: the model's name (see Plugin); an empty tag is the
+    # top level. A robot spawned by spawn_model at the top level has "/" from the spawn
+    # request, so its controller manager is /controller_manager, as in Gazebo.
+    ABSENT_NAMESPACE_IS_MODEL = True
+
     def __init__(self, context, spec):
         super().__init__(context, spec)
         transmissions = context.robot.model.transmissions
@@ -100,11 +105,6 @@ class RosControl(Plugin):
             raise PluginError(f"plugin '{spec.name}' (libgazebo_ros_control.so): model "
                               f"'{context.model_name}' has no <transmission>, so no joint to "
                               "control")
-        if not context.namespace_given and spec.text("robotNamespace") is None:
-            # gazebo_ros_control's own default (its other plugins' is none): the model's name;
-            # a robot spawned by spawn_model at the top level has "/" from the spawn request,
-            # so its controller manager is /controller_manager, as in Gazebo
-            self.namespace = context.model_name.strip("/")
         self.hardware = RobotHardware(context, transmissions)
         self.param("robotParam")  # the spawned model's own description is used
         self.flag("legacyModeNS", False)  # how upstream finds robotParam: no effect here
