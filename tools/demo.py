@@ -39,9 +39,8 @@ def true_yaw_degrees(get_state) -> float:
 
 def rviz_crashed(viewer: headless.Launch) -> bool:
     """rviz died of a signal: in the launch (roslaunch says so), or started by itself."""
-    if viewer.process.args[0] == "roslaunch":
-        return headless.died_of_signal(viewer.output(), "rviz")
-    return viewer.process.poll() is not None and viewer.process.returncode < 0
+    return headless.died_of_signal(viewer.output(), "rviz") or (
+        viewer.process.poll() is not None and viewer.process.returncode < 0)
 
 
 def rviz_picture(display: str, shot: str, launch: headless.Launch, env,

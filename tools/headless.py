@@ -17,7 +17,6 @@ from __future__ import annotations
 import contextlib
 import fcntl
 import os
-import re
 import shutil
 import signal
 import socket
@@ -25,6 +24,8 @@ import subprocess
 import tempfile
 import time
 from typing import Callable, Dict, Iterator, List, Optional, Sequence, TypeVar
+
+from course_grader.platform_faults import signal_deaths
 
 
 T = TypeVar("T")
@@ -164,15 +165,11 @@ def roslaunch(arguments: Sequence[str], env: Dict[str, str], log_path: str) -> I
         launch.stop()
 
 
-# roslaunch's words for a node that died of a signal (a negative exit code); a required
-# node's death reads "REQUIRED process [rviz-4] has died!" then "process has died [pid ...",
-# another's "[rviz-4] process has died [pid ..." (roslaunch/pmon.py)
-_SIGNAL_DEATH = r"\[{node}-\d+\](?: has died!\s*| )process has died \[pid \d+, exit code -\d+"
-
-
 def died_of_signal(output: str, node: str) -> bool:
-    """True when a launch's ``output`` says that its node ``node`` was killed by a signal."""
-    return re.search(_SIGNAL_DEATH.format(node=re.escape(node)), output) is not None
+    """True when a launch's ``output`` says that its node ``node`` was killed by a signal
+    (roslaunch's words, read as the grader reads them)."""
+    return any(name.rsplit("-", 1)[0] == node
+               for name, _, _ in signal_deaths(output.splitlines()))
 
 
 # Debian's rviz, drawing in software under Xvfb, now and then aborts while it starts: a heap
@@ -189,16 +186,17 @@ def run_while_node_lives(arguments: Sequence[str], env: Dict[str, str], log_path
     the launch again (logs ``<log>``, ``<log stem>-2<ext>``, ...), up to ``starts`` times;
     any other failure is raised at once."""
     stem, extension = os.path.splitext(log_path)
-    for start in range(1, starts + 1):
-        log = log_path if start == 1 else f"{stem}-{start}{extension}"
+    start, log = 1, log_path
+    while True:
         with roslaunch(arguments, env, log) as launch:
             try:
                 return body(launch)
-            except Exception:  # re-raised unless the node crashed
+            except Exception:  # re-raised unless the node crashed and may start again
                 if start == starts or not died_of_signal(launch.output(), node):
                     raise
         print(f"{node} died of a signal (see {log}); starting the launch again", flush=True)
-    raise AssertionError("unreachable: the last start returns or raises")
+        start += 1
+        log = f"{stem}-{start}{extension}"
 
 
 def window_mapped(display: str, title: str) -> bool:

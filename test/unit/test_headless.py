@@ -19,7 +19,7 @@ def death_line(name, exit_code, required):
     description = process.get_exit_description()
     if required:
         return "=" * 80 + f"REQUIRED process [{name}] has died!\n{description}\n"
-    return f"[{name}] {description}"
+    return f"\x1b[31m[{name}] {description}\x1b[0m"     # printerrlog colours it red
 
 
 @pytest.mark.parametrize("required", [True, False])

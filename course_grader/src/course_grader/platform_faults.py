@@ -11,7 +11,7 @@ from __future__ import annotations
 import glob
 import os
 import re
-from typing import Iterable, List, Optional
+from typing import Iterable, List, Optional, Tuple
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.realpath(__file__)))))
@@ -22,8 +22,9 @@ MISSING = re.compile(r"Resource not found: ([A-Za-z0-9_]+)")
 # roslaunch's words for a node that ended on its own: "[rviz-3] process has died [pid 22396,
 # exit code -11, cmd /usr/lib/rviz/rviz -d ... __name:=rviz ...]"; for a required node two
 # lines, "REQUIRED process [rviz-3] has died!" then "process has died [pid 22396, ..."
-DIED = re.compile(r"(?:\[([^\]]+)\] )?process has died \[pid \d+, exit code (-\d+), cmd (\S+)")
-REQUIRED_DIED = re.compile(r"REQUIRED process \[([^\]]+)\] has died!")
+# (a name holds no bracket: roslaunch colours the line, "\x1b[31m[rviz-3] process ...")
+DIED = re.compile(r"(?:\[([^][]+)\] )?process has died \[pid \d+, exit code (-\d+), cmd (\S+)")
+REQUIRED_DIED = re.compile(r"REQUIRED process \[([^][]+)\] has died!")
 SYSTEM_DIRS = ("/usr/", "/bin/", "/lib/")
 # a log this big is read from its end only
 TAIL_BYTES = 2_000_000
@@ -34,23 +35,29 @@ def _is_platform(path: str) -> bool:
     return any(path.startswith(os.path.join(REPO, folder) + os.sep) for folder in PLATFORM_DIRS)
 
 
-def killed_platform_program(lines: List[str]) -> Optional[str]:
-    """The first platform program roslaunch saw killed by a signal: "rviz-3 (exit code
-    -11, /usr/lib/rviz/rviz)"; None when there is none. A submission's own node that
-    crashes is the submission's."""
-    required = None
+def signal_deaths(lines: Iterable[str]) -> List[Tuple[str, str, str]]:
+    """The nodes roslaunch saw killed by a signal, in its log's order: (name, exit code,
+    command), e.g. ("rviz-3", "-11", "/usr/lib/rviz/rviz"), in either of its two forms."""
+    deaths, required = [], None
     for line in lines:
         required_match = REQUIRED_DIED.search(line)
         if required_match:
             required = required_match.group(1)
             continue
         match = DIED.search(line)
-        if not match:
-            continue
-        name, code, command = match.groups()
-        name, required = name or required, None
-        if name is None:
-            continue
+        if match:
+            name, code, command = match.groups()
+            if name or required:
+                deaths.append((name or required, code, command))
+            required = None
+    return deaths
+
+
+def killed_platform_program(lines: List[str]) -> Optional[str]:
+    """The first platform program roslaunch saw killed by a signal: "rviz-3 (exit code
+    -11, /usr/lib/rviz/rviz)"; None when there is none. A submission's own node that
+    crashes is the submission's."""
+    for name, code, command in signal_deaths(lines):
         if _is_platform(command) or os.path.realpath(command).startswith(SYSTEM_DIRS):
             return f"{name} (exit code {code}, {command})"
     return None

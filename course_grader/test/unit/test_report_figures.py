@@ -4,17 +4,21 @@ its item or saying why there is none, report.json listing the files, the reasons
 before anything runs (a course without rviz, --only leaving it out), and the screenshot
 module on a virtual screen (a window drawn is kept, a window of one colour is not, a
 missing window is named)."""
-import fcntl
 import json
 import os
 import shutil
 import subprocess
+import sys
 import time
 
 import pytest
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.dirname(os.path.abspath(__file__))))), "tools"))
+import headless  # noqa: E402  (tools/ is not a package)
+
 from course_grader import course as course_file
-from course_grader import grader, report, ros_run, screenshot
+from course_grader import grader, report, screenshot
 from course_grader.results import Check, Figure, Report, judge
 
 DRIVE = {"item": "cmd_vel_moves", "command": "/cmd_vel at 0.2 m/s for 3 s",
@@ -111,24 +115,9 @@ def test_pictures_of_an_earlier_grading_are_removed(tmp_path):
 def display():
     if shutil.which("Xvfb") is None or screenshot.missing_tools():
         pytest.skip("Xvfb, x11-utils or imagemagick not installed (tools/setup.sh installs them)")
-    read_end, write_end = os.pipe()
-    # started and stopped under the grader's lock, as every Xvfb here: one stopping gives
-    # up its display's lock file before its socket, which a new one on that number loses
-    with open(ros_run.XVFB_START_LOCK, "a", encoding="utf-8") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)
-        server = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0",
-                                   "320x240x24", "-nolisten", "tcp"], pass_fds=(write_end,),
-                                  stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        os.close(write_end)
-        deadline = time.monotonic() + XVFB_START
-        with os.fdopen(read_end) as announced:
-            number = announced.readline().strip()
-    assert number.isdigit() and time.monotonic() < deadline, "Xvfb chose no display"
-    yield f":{number}"
-    with open(ros_run.XVFB_START_LOCK, "a", encoding="utf-8") as lock:
-        fcntl.flock(lock, fcntl.LOCK_EX)
-        server.terminate()
-        server.wait(timeout=10)
+    # headless's Xvfb: started and stopped under the lock every Xvfb here takes
+    with headless.virtual_display(320, 240, timeout=XVFB_START) as number:
+        yield number
 
 
 def window(display, title, *options):
