@@ -102,13 +102,17 @@ def test_the_students_commands_spawn_scan_rotate_and_teleop(overlay, ros_env, re
                 ["rosservice", "info", "/rotate_robot"], env=env, capture_output=True,
                 timeout=30, check=False).returncode == 0 or not service.running(), 60,
                 "the C++ rotate service")
-            before = true_pose(env)[2]
-            call = subprocess.run(["rosservice", "call", "/rotate_robot", "degrees: 90"],
-                                  env=env, capture_output=True, text=True, timeout=120,
-                                  check=False)
-            assert 'result: "success: rotated 90 degrees"' in call.stdout, call.stdout
-            turned = wrap_degrees(settled_yaw(env) - before)
-            assert turned == pytest.approx(90.0, abs=3.0)
+            # -90 first: a wrong turn direction (the diff drive's wheels swapped) sends the
+            # closed loop away from the goal until its 20 s timeout
+            for degrees in (-90, 90):
+                before = true_pose(env)[2]
+                call = subprocess.run(["rosservice", "call", "/rotate_robot",
+                                       f"degrees: {degrees}"], env=env, capture_output=True,
+                                      text=True, timeout=120, check=False)
+                assert f'result: "success: rotated {degrees} degrees"' in call.stdout, \
+                    call.stdout
+                turned = wrap_degrees(settled_yaw(env) - before)
+                assert turned == pytest.approx(degrees, abs=5.0)
 
         # teleop_twist_keyboard in a terminal: 'i' drives forward, 'k' stops, Ctrl-C quits
         start = true_pose(env)

@@ -26,8 +26,8 @@ from urdf_tools.model import RobotModel, UrdfError
 # Gazebo's ODE defaults: mu = mu2 = 1; no self collision; gravity on.
 DEFAULT_MU = 1.0
 # Plugin parameters every gazebo_ros plugin takes and that change nothing here: the plugin
-# always runs, logs at the node's level, and legacyMode's wheel swap is not needed.
-READ_BY_EVERY_PLUGIN = frozenset(("alwaysOn", "rosDebugLevel", "legacyMode", "robotNamespace"))
+# always runs and logs at the node's level.
+READ_BY_EVERY_PLUGIN = frozenset(("alwaysOn", "rosDebugLevel", "robotNamespace"))
 # <gazebo reference="joint"> tags with no effect here (pybullet's joints are exact);
 # reported once each. preserveFixedJoint and disableFixedJointLumping are honoured by
 # sim_bridge.model_structure (the links Gazebo shows), so they are not in this list.

@@ -20,6 +20,7 @@ class RecordingBus(Bus):
         self.published = {}
         self.subscriptions = {}
         self.warnings = []
+        self.debugs = []  # what verbose:=true would print
         self.closed = []
         self.params = params or {}
         self.services = {}
@@ -55,6 +56,9 @@ class RecordingBus(Bus):
 
     def warn_throttled(self, key, period, text):
         self.warnings.append(text)
+
+    def debug(self, text):
+        self.debugs.append(text)
 
     def get_param(self, name, default=None):
         return self.params.get(name, default)

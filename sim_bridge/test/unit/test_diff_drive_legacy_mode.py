@@ -1,9 +1,14 @@
-"""gazebo_ros_diff_drive's legacyMode, as Noetic's plugin reads it: true when missing (with a
-warning), swapping the wheels' speeds, which an old package's swapped wheel names rely on; a
-robot with its wheels named right turns the wrong way without <legacyMode>false</legacyMode>,
-in Gazebo and here. Checked in the true heading."""
+"""gazebo_ros_diff_drive's wheel speeds as Noetic's plugin computes them, whatever
+``<legacyMode>`` says: Noetic reads no such tag (gazebo_plugins noetic-devel,
+gazebo_ros_diff_drive.cpp, getWheelVelocities: the joint <leftJoint> names turns at
+v - w s/2, the one <rightJoint> names at v + w s/2; only kinetic-devel read legacyMode,
+default true, and swapped them). So +w turns a robot whose <leftJoint> is its left wheel
+counter-clockwise with the tag missing, true or false, and a Kinetic-era package that swapped
+its joints' names (relying on legacyMode) turns clockwise, as on Noetic's Gazebo. Checked in
+the true heading."""
 import math
 
+import pytest
 from geometry_msgs.msg import Twist
 
 from sim_bridge.poses import rpy_from_quaternion
@@ -11,6 +16,7 @@ from world_fixtures import run
 
 LEGACY_FALSE = "<legacyMode>false</legacyMode>"
 LEFT, RIGHT = "<leftJoint>left_wheel_joint</leftJoint>", "<rightJoint>right_wheel_joint</rightJoint>"
+WRITTEN = {"missing": "", "true": "<legacyMode>true</legacyMode>", "false": LEGACY_FALSE}
 
 
 def yaw(world):
@@ -29,30 +35,37 @@ def turn(world, bus, xml, rate=0.5, seconds=1.0):
     return math.remainder(yaw(world) - start, 2 * math.pi)
 
 
+def believed_yaw(bus):
+    odometry = bus.last("/odom").pose.pose.orientation
+    return rpy_from_quaternion((odometry.x, odometry.y, odometry.z, odometry.w))[2]
+
+
 def swapped(xml):
-    """An old package: the right wheel named as the plugin's left, and legacyMode true."""
+    """A Kinetic-era package: the right wheel named as the plugin's left, legacyMode true."""
     assert LEFT in xml and RIGHT in xml and LEGACY_FALSE in xml
-    return (xml.replace(LEGACY_FALSE, "<legacyMode>true</legacyMode>")
+    return (xml.replace(LEGACY_FALSE, WRITTEN["true"])
             .replace(LEFT, "<leftJoint>right_wheel_joint</leftJoint>")
             .replace(RIGHT, "<rightJoint>left_wheel_joint</rightJoint>"))
 
 
-def test_false_turns_as_commanded(world, bus, diff_bot_xml):
-    assert turn(world, bus, diff_bot_xml()) > 0.3
+@pytest.mark.parametrize("written", sorted(WRITTEN))
+def test_plus_w_turns_counter_clockwise_whatever_legacy_mode_says(world, bus, diff_bot_xml,
+                                                                  written):
+    xml = diff_bot_xml().replace(LEGACY_FALSE, WRITTEN[written])
+    assert (LEGACY_FALSE in xml) == (written == "false")
+    turned = turn(world, bus, xml)
+    assert 0.3 < turned < 0.6, f"legacyMode {written}: turned {turned:+.3f} rad for +0.5 rad/s"
     assert not [w for w in bus.warnings if "legacyMode" in w]
+    notes = [d for d in bus.debugs if "<legacyMode>" in d]
+    assert len(notes) == (0 if written == "missing" else 1)
+    assert all("ignores <legacyMode>" in note and "Noetic" in note for note in notes)
 
 
-def test_missing_is_true_and_said_so_and_turns_a_rightly_named_robot_backwards(
+def test_a_kinetic_package_with_swapped_joint_names_turns_clockwise_as_on_noetic(
         world, bus, diff_bot_xml):
-    assert turn(world, bus, diff_bot_xml().replace(LEGACY_FALSE, "")) < -0.3
-    (warning,) = [w for w in bus.warnings if "legacyMode" in w]
-    assert "defaults to true" in warning and LEGACY_FALSE in warning
-
-
-def test_true_turns_an_old_package_with_swapped_names_as_commanded(world, bus, diff_bot_xml):
     turned = turn(world, bus, swapped(diff_bot_xml(odometry_source="encoder")))
-    assert turned > 0.3
-    # its encoder odometry reads the wheels through the same swap: it turns as the robot did
-    odometry = bus.last("/odom").pose.pose.orientation
-    believed = rpy_from_quaternion((odometry.x, odometry.y, odometry.z, odometry.w))[2]
-    assert abs(believed - turned) < 0.1 * abs(turned)
+    assert turned < -0.3
+    # Noetic's encoder odometry reads the joints as named (UpdateOdometryEncoder): the joint
+    # called left spins backwards, so it believes the robot turned counter-clockwise
+    believed = believed_yaw(bus)
+    assert believed > 0.3 and abs(believed + turned) < 0.1 * abs(turned)

@@ -65,6 +65,18 @@ SENSOR_PLUGINS = {
 }
 
 
+# Tags that plugins of an older release read and Noetic's read no more: many packages still
+# carry them. Noetic's plugins ignore them silently; here they are a --verbose note, never
+# acted on (acting on one would turn a robot as no Noetic user sees it turn).
+RETIRED_TAGS = {
+    # kinetic-devel's gazebo_ros_diff_drive.cpp read it (default true: the wheels' speeds
+    # swapped); melodic-devel and noetic-devel read no such tag (gazebo_ros_diff_drive.cpp,
+    # getWheelVelocities: left = v - w s/2, right = v + w s/2)
+    "legacyMode": "Kinetic's gazebo_ros_diff_drive swapped the wheels' speeds when it was "
+                  "true; Noetic's plugins read no such tag (dropped in Melodic)",
+}
+
+
 def links_read_by_model_plugins(tags: GazeboTags, canonical: str) -> Set[str]:
     """The links that emulated model plugins read through ``<bodyName>``."""
     links = set()
@@ -96,6 +108,10 @@ def _build(context: PluginContext, spec: PluginSpec, what: str,
     context.bus.debug(f"model '{context.model_name}': {what} loaded: "
                       f"{spec.summary() or 'no parameters'}")
     unread = spec.unread()
+    for tag in [tag for tag in unread if tag in RETIRED_TAGS]:
+        unread.remove(tag)
+        context.bus.debug(f"model '{context.model_name}': {what} ignores <{tag}>: "
+                          f"{RETIRED_TAGS[tag]}")
     if unread:  # e.g. <torque> where Noetic's plugin reads <wheelTorque>
         context.bus.warn(f"model '{context.model_name}': {what} does not read "
                          f"{', '.join(f'<{tag}>' for tag in unread)} (not a parameter of "

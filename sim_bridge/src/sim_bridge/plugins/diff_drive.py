@@ -9,13 +9,16 @@ commandTopic (cmd_vel), odometryTopic (odom), odometryFrame (odom),
 robotBaseFrame (base_footprint), publishWheelTF (false), publishOdomTF (true),
 publishWheelJointState (false), publishTf (true: false turns all TF off),
 odometrySource (world | encoder, or 1 | 0; world), updateRate (100 Hz), robotNamespace.
-legacyMode (true, as gazebo_ros: the wheel <leftJoint> names gets the right wheel's speed
-and the other the left's, which old packages' swapped names relied on; when the tag is
-missing one warning says so, as gazebo_ros logs an error; a new package writes false).
 
-Differences from Gazebo, on purpose: encoder odometry's twist keeps the sign of v, and it
-reads the wheels as legacyMode drives them (Gazebo's ignores legacyMode, so an old
-package's odometry turned the other way from its robot); a
+The wheels' speeds are Noetic's ``GazeboRosDiffDrive::getWheelVelocities``: the joint
+``<leftJoint>`` names turns at (v - w s/2)/r, the one ``<rightJoint>`` names at
+(v + w s/2)/r, whatever else the file says. Noetic reads no ``<legacyMode>``: Kinetic's
+plugin swapped the two speeds when it was true; Melodic dropped the tag (gazebo_plugins
+2.8), so a Kinetic-era package that swapped its joints' names and wrote
+``<legacyMode>true</legacyMode>`` turns clockwise for +w on Noetic's Gazebo, and here
+(sim_bridge.plugins.RETIRED_TAGS: the tag is a --verbose note, never acted on).
+
+Differences from Gazebo, on purpose: encoder odometry's twist keeps the sign of v; a
 ``cmd_vel`` with NaN or inf is ignored with a throttled warning instead of spinning the
 wheels at NaN.
 """
@@ -65,14 +68,6 @@ class DiffDrive(DriveBase):
         self._last_ns = None
         self._joints = [context.robot.joint_index[self.left_joint],
                         context.robot.joint_index[self.right_joint]]
-        self.legacy = self.flag("legacyMode", True)
-        if "legacyMode" not in spec.params:
-            context.bus.warn(
-                f"model '{context.model_name}': plugin '{spec.name}' (libgazebo_ros_diff_drive.so)"
-                " has no <legacyMode>, which defaults to true, as in gazebo_ros: the wheel "
-                f"<leftJoint> names ('{self.left_joint}') turns as a right wheel, for old "
-                "packages whose wheel names were swapped. A robot whose <leftJoint> is its "
-                "left wheel turns the wrong way: write <legacyMode>false</legacyMode>")
 
     def _reset_odometry(self) -> None:
         self.pose = (0.0, 0.0, 0.0)  # encoder odometry: x, y, yaw since spawn or reset
@@ -80,8 +75,7 @@ class DiffDrive(DriveBase):
 
     # --- the step -------------------------------------------------------------------------
     def before_step(self, now_ns: int) -> None:
-        left, right = wheel_speeds(*self.command, self.separation, self.radius)
-        targets = (right, left) if self.legacy else (left, right)
+        targets = wheel_speeds(*self.command, self.separation, self.radius)  # (left, right)
         max_change = self.acceleration / self.radius * self.context.step_size  # rad/s per step
         for side in (0, 1):
             self.wheel_target[side] = limit_change(self.wheel_target[side], targets[side],
@@ -126,8 +120,7 @@ class DiffDrive(DriveBase):
         dt = (now_ns - self._last_ns) / 1e9
         self._last_ns = now_ns
         states = self.context.robot.joint_states([self.left_joint, self.right_joint])
-        left, right = (states[1][1], states[0][1]) if self.legacy else (states[0][1], states[1][1])
-        linear, angular = body_twist(left, right, self.separation, self.radius)
+        linear, angular = body_twist(states[0][1], states[1][1], self.separation, self.radius)
         self.pose = integrate(*self.pose, linear, angular, dt)
         self.encoder_twist = (linear, angular)
 
