@@ -6,6 +6,7 @@ Used by ``make demo`` and by the end-to-end tests in ``test/``:
 - :func:`private_master` picks a free port, so a run never meets another run's roscore;
 - :func:`roslaunch` starts a launch file with a log file and stops it (and its children);
 - :func:`run_while_node_lives` starts it again when its rviz died of a signal while starting;
+- :func:`launch_window` finds a window by title among those a launch's own processes opened;
 - :func:`stable_screenshot` waits until a window is drawn and its picture stops changing;
 - :func:`dark_pixels`, :func:`differing_pixels` and :func:`pixels_near` measure
   screenshots with ImageMagick.
@@ -25,6 +26,7 @@ import tempfile
 import time
 from typing import Callable, Dict, Iterator, List, Optional, Sequence, TypeVar
 
+from course_grader.screenshot import windows as shown_windows
 from course_grader.platform_faults import signal_deaths
 
 
@@ -199,6 +201,49 @@ def run_while_node_lives(arguments: Sequence[str], env: Dict[str, str], log_path
         log = f"{stem}-{start}{extension}"
 
 
+def launch_processes(launch: Launch) -> Dict[int, str]:
+    """{pid: command line} of the launch's roslaunch and every process under it."""
+    parents: Dict[int, int] = {}
+    commands: Dict[int, str] = {}
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat", encoding="utf-8", errors="replace") as stream:
+                # pid (comm) state ppid ...: comm may hold spaces and brackets
+                parents[int(entry)] = int(stream.read().rsplit(")", 1)[1].split()[1])
+            with open(f"/proc/{entry}/cmdline", "rb") as stream:
+                commands[int(entry)] = stream.read().replace(b"\0", b" ").decode(
+                    errors="replace").strip()
+        except (OSError, IndexError, ValueError):
+            continue  # ended meanwhile
+    found = {launch.process.pid}
+    grew = True
+    while grew:
+        below = {pid for pid, parent in parents.items() if parent in found} - found
+        found |= below
+        grew = bool(below)
+    return {pid: commands.get(pid, "") for pid in found}
+
+
+def launch_window(display: str, title: str, launch: Launch) -> Optional[str]:
+    """The id of a shown window whose title holds ``title`` and that a process of ``launch``
+    opened (its _NET_WM_PID, which Qt sets), or None: a window of an earlier launch of the
+    same file that lingers is not it. Titles are read by xwininfo (UTF-8: a Qt node's title
+    holds an em dash, which ``xdotool search --name`` does not match across)."""
+    ours = launch_processes(launch)
+    for window in shown_windows(display):
+        if title not in window.title:
+            continue
+        owner = subprocess.run(["xdotool", "getwindowpid", window.id],
+                               env=dict(os.environ, DISPLAY=display), capture_output=True,
+                               text=True, timeout=20, check=False)
+        if owner.returncode == 0 and owner.stdout.strip().isdigit() \
+                and int(owner.stdout) in ours:
+            return window.id
+    return None
+
+
 def window_mapped(display: str, title: str) -> bool:
     tree = subprocess.run(["xwininfo", "-display", display, "-root", "-tree"],
                           capture_output=True, text=True, check=False).stdout
@@ -257,7 +302,9 @@ def uniform(path: str) -> bool:
 def stable_screenshot(display: str, path: str, window_title: str, launch: Launch,
                       timeout: float = 90.0, settle: int = 3) -> str:
     """Waits for a window titled ``window_title`` (while ``launch`` keeps running), then
-    takes screenshots until ``settle`` in a row are identical; returns ``path``."""
+    takes screenshots until ``settle`` in a row are identical; returns ``path``. Any window
+    of that title will do (pybullet's sets no _NET_WM_PID for :func:`launch_window`); a
+    launch started again has stopped the earlier one's processes, windows with them."""
     def mapped():
         if not launch.running():
             raise launch.exited_early()

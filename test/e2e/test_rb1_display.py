@@ -1,6 +1,7 @@
 """display.launch as a user runs it: rviz draws the RB1; a broken model stops the launch."""
 import os
 import shutil
+import signal
 import subprocess
 
 import yaml
@@ -40,26 +41,57 @@ def joint_positions(env):
     return dict(zip(message["name"], message["position"]))
 
 
+# The first slider's handle (right_wheel_joint at 0) in joint_state_publisher_gui's window
+SLIDER_HANDLE = (140, 57)
+DRAG = 100   # pixels to the right
+
+
+def crash_rviz(display, launch):
+    """Kills the launch's rviz with SIGSEGV once its window shows, as Debian's rviz now and
+    then dies under Xvfb, and waits for roslaunch to end (rviz is required)."""
+    headless.wait_until(lambda: headless.launch_window(display, "RViz", launch)
+                        or not launch.running(), 90, "the RViz window")
+    (rviz,) = [pid for pid, command in headless.launch_processes(launch).items()
+               if command.split(" ", 1)[0].endswith("/rviz")]
+    os.kill(rviz, signal.SIGSEGV)
+    headless.wait_until(lambda: not launch.running(), 30, "roslaunch to stop after rviz died")
+    raise RuntimeError("rviz killed with SIGSEGV on purpose: the launch must start again")
+
+
 def test_display_launch_as_typed_wheels_follow_the_sliders(screen_env, results_dir):
+    """As typed, through a restart: the first start's rviz is killed, as Debian's rviz
+    sometimes dies, so every run drives the sliders of the launch started again."""
     display = screen_env["DISPLAY"]
     log = os.path.join(results_dir, "display.log")
+    starts = []
 
     def drag_the_first_slider(launch):
+        starts.append(launch.log_path)
+        if len(starts) == 1:
+            crash_rviz(display, launch)
+        windows = {}
         for title in ("RViz", "Joint State Publisher"):
-            headless.wait_until(lambda: headless.window_mapped(display, title)
-                                or not launch.running(), 90, f"the {title} window")
+            windows[title] = headless.wait_until(
+                lambda: headless.launch_window(display, title, launch)
+                or not launch.running(), 90, f"the {title} window of {launch.log_path}")
             assert launch.running(), launch.output()[-2000:]
         assert joint_positions(screen_env)["right_wheel_joint"] == 0.0
-        # drag the first slider (right_wheel_joint) to the right, as a user would; the
-        # slider's handle sits at (140, 57) in the GUI's window, which opens at (0, 0)
-        subprocess.run(["xdotool", "mousemove", "140", "57", "mousedown", "1",
-                        "mousemove", "240", "57", "mouseup", "1"], env=screen_env, check=True)
+        # drag the first slider (right_wheel_joint) to the right, as a user would, in the
+        # sliders' window of this launch, raised above rviz (with no window manager both
+        # open at 0, 0, the one mapped last on top)
+        sliders = windows["Joint State Publisher"]
+        x, y = SLIDER_HANDLE
+        subprocess.run(["xdotool", "windowraise", sliders,
+                        "mousemove", "--window", sliders, str(x), str(y), "mousedown", "1",
+                        "mousemove", "--window", sliders, str(x + DRAG), str(y),
+                        "mouseup", "1"], env=screen_env, check=True, timeout=20)
         headless.wait_until(lambda: joint_positions(screen_env)["right_wheel_joint"] > 1.0, 30,
                             "right_wheel_joint to follow its slider")
         assert joint_positions(screen_env)["left_wheel_joint"] == 0.0
 
     headless.run_while_node_lives(["my_rb1_description", "display.launch"], screen_env, log,
                                   drag_the_first_slider)
+    assert starts == [log, os.path.join(results_dir, "display-2.log")]
 
 
 def test_a_malformed_model_stops_the_launch_naming_file_and_error(ros_env, results_dir):

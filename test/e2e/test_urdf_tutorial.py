@@ -121,7 +121,8 @@ def test_relative_model_is_read_from_the_current_directory(screen_env, results_d
     display = screen_env["DISPLAY"]
 
     def sliders_and_tf(launch):
-        headless.wait_until(lambda: headless.window_mapped(display, "Joint State Publisher")
+        headless.wait_until(lambda: headless.launch_window(display, "Joint State Publisher",
+                                                           launch)
                             or not launch.running(), 30, "the sliders' window")
         assert launch.running(), launch.output()[-2000:]
         assert_tf_for_every_link(screen_env)

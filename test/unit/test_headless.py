@@ -93,3 +93,24 @@ def test_the_last_crash_is_raised(monkeypatch):
     with pytest.raises(headless.WaitTimeout):
         headless.run_while_node_lives(["p", "x.launch"], {}, "/r/a.log", body)
     assert len(logs) == headless.RVIZ_STARTS
+
+
+def test_launch_processes_are_the_launch_and_everything_under_it():
+    """What launch_window matches a window's owner against: children and grandchildren."""
+    import subprocess
+    tree = subprocess.Popen(["bash", "-c", "sleep 60 & (sleep 61 & wait) & wait"],
+                            start_new_session=True)
+    stranger = subprocess.Popen(["sleep", "62"])
+    try:
+        launch = headless.Launch(tree, os.devnull)
+        commands = headless.wait_until(
+            lambda: (lambda found: found if len(found) == 4 else None)(
+                headless.launch_processes(launch)), 10, "the tree to start")
+        assert tree.pid in commands and stranger.pid not in commands
+        assert sorted(c for c in commands.values() if c.startswith("sleep")) == [
+            "sleep 60", "sleep 61"]
+    finally:
+        os.killpg(tree.pid, 9)
+        stranger.kill()
+        tree.wait()
+        stranger.wait()
