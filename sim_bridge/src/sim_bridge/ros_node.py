@@ -239,6 +239,22 @@ class RosBus(Bus):
         return rospy.get_param(name, default)
 
 
+def search_tf_prefix(namespace: str, lookup) -> str:
+    """What gazebo_ros's plugins prefix their frames with, for a model in ``namespace``;
+    ``lookup(key)`` is a parameter's value or None. Noetic's GazeboRos reads it with
+    tf::getPrefixParam (gazebo_ros_pkgs noetic-devel f9e1a46,
+    gazebo_plugins/src/gazebo_ros_utils.cpp:87): a searchParam for ``tf_prefix`` from the
+    namespace up to the root, "" when none is set. The namespace itself is no prefix (three
+    robots spawned in tb3_0..tb3_2 without a tf_prefix all publish odom, as in Gazebo; the
+    header's comment, gazebo_ros_utils.h:116, says otherwise, the code does not)."""
+    parts = [part for part in namespace.split("/") if part]
+    for depth in range(len(parts), -1, -1):
+        value = lookup("/" + "/".join(parts[:depth] + ["tf_prefix"]))
+        if value is not None:
+            return str(value)
+    return ""
+
+
 def display_available() -> bool:
     display = os.environ.get("DISPLAY")
     if not display:
@@ -375,13 +391,7 @@ class SimBridgeNode:
 
     @staticmethod
     def _tf_prefix(namespace: str) -> str:
-        """What gazebo_ros's plugins prefix their frames with: the ``tf_prefix`` parameter
-        of the model's namespace, else the namespace itself, as GazeboRos (gazebo_plugins'
-        common parameter reader) falls back to it: three robots spawned in tb3_0..tb3_2
-        publish tb3_0/odom and so on, not three odom frames."""
-        namespace = namespace.strip("/")
-        prefix = rospy.get_param(f"/{namespace}/tf_prefix" if namespace else "/tf_prefix", "")
-        return str(prefix) or namespace
+        return search_tf_prefix(namespace, lambda key: rospy.get_param(key, None))
 
     def _spawn_urdf(self, request):
         return self._spawn(request, "urdf")

@@ -236,8 +236,9 @@ def test_diff_drive_controller_drives_and_integrates_its_encoders():
     from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec
     world.add_sdf_model(ModelSpec("ground", True, links=[
         LinkSpec("link", collisions=[ShapeSpec("plane")])]))
+    # a tf_prefix set: gazebo_plugins' frames take it, the controller's frames do not
     world.spawn_urdf("bot", expand(f"{DATA}/diff_bot.urdf.xacro", {"drive": "ros_control"}),
-                     namespace="")
+                     namespace="", tf_prefix="bot")
     manager = "/bot/controller_manager"   # no robotNamespace, none requested: the model's
     assert bus.services[f"{manager}/load_controller"](LoadControllerRequest("base_controller")).ok
     assert bus.services[f"{manager}/switch_controller"](
@@ -258,7 +259,8 @@ def test_diff_drive_controller_drives_and_integrates_its_encoders():
     # the last command at 0.8 s lapses at 1.3 s: 1.3 s at 0.2 m/s
     assert travelled == pytest.approx(0.26, abs=0.01)
     odometry = bus.last("/bot/base_controller/odom")
-    assert odometry.child_frame_id == "base_footprint"
+    # as written (ros_controllers noetic-devel 678b92a, diff_drive_controller.cpp:708-709)
+    assert (odometry.header.frame_id, odometry.child_frame_id) == ("odom", "base_footprint")
     assert odometry.pose.pose.position.x == pytest.approx(travelled, abs=0.01)
     assert odometry.pose.covariance[35] == 0.03
     world.close()

@@ -68,17 +68,12 @@ class ControllerIO:
     bus: object
     namespace: str
     robot: object
-    tf_prefix: str
 
     def topic(self, name: str) -> str:
         return resolve_topic(self.namespace, name)
 
     def param_path(self, controller: str, key: str) -> str:
         return resolve_topic(self.namespace, f"{controller}/{key}")
-
-    def frame(self, name: str) -> str:
-        prefix = self.tf_prefix.strip("/")
-        return f"{prefix}/{name.lstrip('/')}" if prefix else name.lstrip("/")
 
 
 # gazebo_ros_control's own RobotHWSim, the one every robot file names
@@ -118,7 +113,7 @@ class RosControl(Plugin):
         period = self.number("controlPeriod", context.step_size)
         self.rate = Rate(1.0 / period if period > context.step_size else 0.0)
         self.period = max(period, context.step_size)
-        self.io = ControllerIO(context.bus, self.namespace, context.robot, context.tf_prefix)
+        self.io = ControllerIO(context.bus, self.namespace, context.robot)
         self.controllers: Dict[str, Loaded] = {}
         self.now_ns = 0
         bus = context.bus

@@ -53,8 +53,10 @@ class DiffDriveController(Controller):
         self.radius = float(radius) * self.number("wheel_radius_multiplier", 1.0)
         self.rate = Rate(self.number("publish_rate", 50.0))
         self.timeout_ns = int(self.number("cmd_vel_timeout", 0.5) * 1e9)
-        self.base_frame = io.frame(str(self.params.get("base_frame_id", "base_link")))
-        self.odom_frame = io.frame(str(self.params.get("odom_frame_id", "odom")))
+        # as written, no tf_prefix (ros_controllers noetic-devel 678b92a,
+        # diff_drive_controller/src/diff_drive_controller.cpp:245-249, 708-709, 732-733)
+        self.base_frame = str(self.params.get("base_frame_id", "base_link"))
+        self.odom_frame = str(self.params.get("odom_frame_id", "odom"))
         self.publish_tf = bool(self.params.get("enable_odom_tf", True))
         self.pose_covariance = self._diagonal("pose_covariance_diagonal")
         self.twist_covariance = self._diagonal("twist_covariance_diagonal")
