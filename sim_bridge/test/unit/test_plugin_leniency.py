@@ -108,16 +108,16 @@ def test_a_drive_parameter_gazebo_cannot_read_takes_its_default_and_the_plugin_r
 
 UNREADABLE = robot("""<plugin name="truth" filename="libgazebo_ros_p3d.so">
   <bodyName>base</bodyName><topicName>ground_truth</topicName><updateRate>often</updateRate>
-  <xyzOffsets>1 two 3</xyzOffsets><gaussianNoise>nan</gaussianNoise></plugin>""")
+  <xyzOffset>1 two 3</xyzOffset><gaussianNoise>nan</gaussianNoise></plugin>""")
 
 
 def test_every_unreadable_value_is_named_with_the_default_used(world, bus):
     world.spawn_urdf("r", UNREADABLE, (0, 0, 0.1))
-    named = {tag: w for w in bus.warnings for tag in ("updateRate", "xyzOffsets", "gaussianNoise")
+    named = {tag: w for w in bus.warnings for tag in ("updateRate", "xyzOffset", "gaussianNoise")
              if f"<{tag}>" in w}
     assert "'often' is not a number" in named["updateRate"]
-    assert "'1 two 3' is not three numbers" in named["xyzOffsets"]
-    assert "its default, 0 0 0" in named["xyzOffsets"]
+    assert "'1 two 3' is not three numbers" in named["xyzOffset"]
+    assert "its default, 0 0 0" in named["xyzOffset"]
     assert "'nan' is not a finite number" in named["gaussianNoise"]
     run(world, 0.1)
     message = bus.published["/ground_truth"][-1]

@@ -63,8 +63,8 @@ class GazeboRosImu(Plugin):
             if plural in spec.params:
                 context.bus.warn(f"model '{context.model_name}': plugin '{spec.name}' "
                                  f"({spec.filename}) reads <{singular}>, not <{plural}> "
-                                 f"(that is libgazebo_ros_p3d.so's); <{plural}> is ignored, "
-                                 "as Gazebo ignores it")
+                                 "(no gazebo_plugins release reads the plural, p3d "
+                                 f"included); <{plural}> is ignored, as Gazebo ignores it")
         self.output = self.service = None
         if self.topic_name:  # upstream: an empty topic name means no topic and no service
             self.output = context.bus.publisher(self.topic(self.topic_name), Imu, queue_size=1)

@@ -1,20 +1,26 @@
 """``libgazebo_ros_p3d.so``: a link's true pose and twist, as nav_msgs/Odometry.
 
-Parameters as gazebo_ros (noetic): bodyName (the link; required), topicName (required),
-frameName (world, or a link of the same model to report relative to), xyzOffsets,
-rpyOffsets (a fixed offset applied to the reported pose), gaussianNoise (standard
-deviation added to position and velocities, seeded), updateRate (0: every step),
-robotNamespace. Velocities are in the reporting frame.
+Parameters as gazebo_ros (noetic-devel f9e1a46, gazebo_plugins/src/gazebo_ros_p3d.cpp)
+reads them: bodyName (the link; required), topicName (required), frameName (world, or a
+link of the same model to report relative to), xyzOffset and rpyOffset (singular, as every
+gazebo_plugins release spells them, :97 and :105; 0), gaussianNoise (standard deviation
+added to the twist alone, seeded; :327-339), updateRate (0: every step), robotNamespace.
+The plural ``<xyzOffsets>`` / ``<rpyOffsets>`` are no parameter of it: Gazebo ignores them,
+and the spawn names them as tags the plugin does not read.
+
+The maths is Noetic's, in its order (:279-304): relative to a reference link f,
+p = R_f^T (p - p_f), q = q_link * q_f^-1, v = R_f (v - v_f), w = R_f (w - w_f) (ignition's
+RotateVector, where the position uses RotateVectorReverse); then p = p + xyzOffset (world
+axes) and q = q_rpyOffset * q. With world as the frame, the twist is in world axes.
 """
 from __future__ import annotations
-
-import math
 
 import numpy as np
 import pybullet as pb
 from nav_msgs.msg import Odometry
 
 from sim_bridge.plugins.base import Plugin, PluginError, Rate, stamp
+from sim_bridge.plugins.body_state import q_inverse, q_multiply, q_normalized, vector3
 from sim_bridge.poses import quaternion_from_rpy, quaternion_matrix
 
 WORLD_FRAMES = ("world", "/world", "map", "/map")
@@ -35,21 +41,13 @@ class P3D(Plugin):
         if self.reference not in WORLD_FRAMES and self.reference not in robot.link_index:
             raise PluginError(f"plugin '{spec.name}': <frameName> '{self.reference}' is neither "
                               "world nor a link of the model")
-        self.offset_position = self._vector("xyzOffsets")
-        self.offset_orientation = quaternion_from_rpy(*self._vector("rpyOffsets"))
+        # singular, as Noetic reads them (gazebo_plugins/src/gazebo_ros_p3d.cpp:97, :105);
+        # the plural is no parameter of any release and stays unread (a spawn warning)
+        self.offset_position = vector3(self, "xyzOffset")
+        self.offset_orientation = quaternion_from_rpy(*vector3(self, "rpyOffset"))
         self.noise = self.number("gaussianNoise", 0.0)
         self.rate = Rate(self.number("updateRate", 0.0))
         self.output = context.bus.publisher(self.topic(topic), Odometry, queue_size=1)
-
-    def _vector(self, tag: str):
-        text = self.param(tag, "0 0 0") or "0 0 0"
-        try:
-            values = [float(v) for v in text.split()]
-        except ValueError:
-            values = []
-        if len(values) != 3 or not all(math.isfinite(v) for v in values):
-            return list(self.unreadable(tag, text, "three numbers (x y z)", (0.0, 0.0, 0.0)))
-        return values
 
     def _link_velocity(self, link: str):
         robot = self.context.robot
@@ -68,21 +66,25 @@ class P3D(Plugin):
             return
         robot = self.context.robot
         position, orientation = robot.link_pose(self.body)
-        position, orientation = pb.multiplyTransforms(position, orientation,
-                                                      self.offset_position,
-                                                      self.offset_orientation)
+        position = np.asarray(position, dtype=float)
         linear, angular = self._link_velocity(self.body)
         if self.reference not in WORLD_FRAMES:
+            # Noetic's maths as it is (gazebo_plugins/src/gazebo_ros_p3d.cpp:291-296): the
+            # position into the frame (RotateVectorReverse), the frame's rotation taken off on
+            # the right (pose.Rot() *= frame.Rot().Inverse()), the velocities turned by the
+            # frame's rotation (RotateVector)
             frame_position, frame_orientation = robot.link_pose(self.reference)
-            inverse = pb.invertTransform(frame_position, frame_orientation)
-            position, orientation = pb.multiplyTransforms(*inverse, position, orientation)
-            rotation = quaternion_matrix(frame_orientation).T
+            rotation = quaternion_matrix(frame_orientation)
+            position = rotation.T @ (position - np.asarray(frame_position, dtype=float))
+            orientation = q_multiply(orientation, q_inverse(frame_orientation))
             frame_linear, frame_angular = self._link_velocity(self.reference)
-            linear, angular = rotation @ (linear - frame_linear), rotation @ (angular - frame_angular)
-        position = np.asarray(position, dtype=float)
-        if self.noise > 0:
+            linear = rotation @ (linear - frame_linear)
+            angular = rotation @ (angular - frame_angular)
+        # then the offsets on the world's side (gazebo_plugins/src/gazebo_ros_p3d.cpp:301-304)
+        position = position + self.offset_position
+        orientation = q_normalized(q_multiply(self.offset_orientation, orientation))
+        if self.noise > 0:  # the twist alone (gazebo_plugins/src/gazebo_ros_p3d.cpp:327-339)
             rng = self.context.rng
-            position = position + rng.normal(0.0, self.noise, 3)
             linear = linear + rng.normal(0.0, self.noise, 3)
             angular = angular + rng.normal(0.0, self.noise, 3)
         message = Odometry()
