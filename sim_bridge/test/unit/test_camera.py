@@ -130,17 +130,78 @@ def test_a_camera_that_cannot_render_is_left_out_naming_why(world, bus, camera, 
     assert any(words in w and "not loaded" in w for w in bus.warnings), bus.warnings
 
 
-def kinect(cutoff=""):
-    """The camera robot with a depth sensor and the openni plugin instead."""
+OPENNI, DEPTH_CAMERA = "libgazebo_ros_openni_kinect.so", "libgazebo_ros_depth_camera.so"
+
+
+def kinect(cutoff="", plugin_file=OPENNI):
+    """The camera robot with a depth sensor and a depth plugin (the openni one unless
+    ``plugin_file`` says) instead."""
     return robot(plugin=cutoff).replace('type="camera"', 'type="depth"').replace(
-        "libgazebo_ros_camera.so", "libgazebo_ros_openni_kinect.so").replace(
+        "libgazebo_ros_camera.so", plugin_file).replace(
         "<cameraName>front</cameraName>", "<cameraName>kinect</cameraName>")
+
+
+@pytest.mark.parametrize("plugin_file", [OPENNI, DEPTH_CAMERA])
+def test_a_depth_cameras_image_and_info_are_on_image_raw_and_camera_info(world, bus,
+                                                                         plugin_file):
+    """Both depth plugins set ir/image_raw and ir/camera_info when the tags are absent
+    (gazebo_plugins/src/gazebo_ros_openni_kinect.cpp:79-82,
+    gazebo_plugins/src/gazebo_ros_depth_camera.cpp:92-95), and then call
+    GazeboRosCameraUtils::Load, which sets image_raw and camera_info unconditionally
+    before reading the tags (gazebo_plugins/src/gazebo_ros_camera_utils.cpp:124, :132):
+    Noetic's image and info arrive on <cameraName>/image_raw and <cameraName>/camera_info
+    (before: ir/image_raw, ir/camera_info)."""
+    world.spawn_urdf("cam_bot", kinect(plugin_file=plugin_file), (0, 0, CAMERA_HEIGHT))
+    run(world, 0.15)
+    assert bus.last("/kinect/image_raw").encoding == "rgb8"
+    assert bus.last("/kinect/camera_info").K[0] == pytest.approx(
+        WIDTH / (2 * math.tan(HFOV / 2)))
+    assert bus.last("/kinect/depth/image_raw").encoding == "32FC1"
+    assert not [t for t in bus.published if "/ir/" in t]
+
+
+FAR_FACE = 7.0  # m: the far crate's near face, beyond the openni plugin's 5 m cut
+
+
+def far_depth(world, bus, plugin_file, cutoff=""):
+    """The depth at the image's centre, of a crate whose face is 6.9 m ahead of the camera,
+    from the depth image and from the point cloud."""
+    world.add_sdf_model(crate("far", FAR_FACE + 0.25, 0.0, (1, 0, 0, 1)))
+    world.spawn_urdf("cam_bot", kinect(cutoff, plugin_file), (0, 0, CAMERA_HEIGHT))
+    run(world, 0.15)
+    depth = np.frombuffer(bus.last("/kinect/depth/image_raw").data, np.float32).reshape(
+        HEIGHT, WIDTH)
+    points = np.frombuffer(bus.last("/kinect/points").data, np.dtype(
+        {"names": ["z"], "formats": ["<f4"], "offsets": [8], "itemsize": 32})).reshape(
+        HEIGHT, WIDTH)
+    return depth[HEIGHT // 2, WIDTH // 2], points["z"][HEIGHT // 2, WIDTH // 2]
+
+
+def test_the_depth_camera_plugin_has_no_far_cutoff(world, bus):
+    """libgazebo_ros_depth_camera.so reads no pointCloudCutoffMax: its depth image keeps
+    every depth above pointCloudCutoff (gazebo_plugins/src/gazebo_ros_depth_camera.cpp:762),
+    its cloud likewise (:675). A crate 6.9 m ahead is measured (before: NaN beyond 5 m); a
+    <pointCloudCutoffMax> written is named as a tag the plugin does not read."""
+    image, cloud = far_depth(world, bus, DEPTH_CAMERA,
+                             "<pointCloudCutoffMax>0.9</pointCloudCutoffMax>")
+    assert image == pytest.approx(FAR_FACE - 0.1, abs=0.05)
+    assert cloud == pytest.approx(FAR_FACE - 0.1, abs=0.05)
+    (warning,) = [w for w in bus.warnings if "does not read" in w]
+    assert "<pointCloudCutoffMax>" in warning
+
+
+def test_the_openni_plugin_cuts_at_5_m(world, bus):
+    """libgazebo_ros_openni_kinect.so reads pointCloudCutoffMax, 5 m by default
+    (gazebo_plugins/src/gazebo_ros_openni_kinect.cpp:105-108), and leaves NaN at and beyond
+    it in the depth image (:454-455) and the cloud (:361-362)."""
+    image, cloud = far_depth(world, bus, OPENNI)
+    assert np.isnan(image) and np.isnan(cloud)
 
 
 def test_a_depth_camera_measures_the_world_in_its_optical_frame(scene, bus):
     scene.spawn_urdf("cam_bot", kinect(), (0, 0, CAMERA_HEIGHT))
     run(scene, 0.15)
-    for topic in ("ir/image_raw", "ir/camera_info", "depth/camera_info"):
+    for topic in ("image_raw", "camera_info", "depth/camera_info"):
         assert bus.last(f"/kinect/{topic}").header.frame_id == "camera_optical"
     depth_message = bus.last("/kinect/depth/image_raw")
     assert depth_message.encoding == "32FC1"

@@ -241,23 +241,30 @@ class Camera(SensorPlugin):
         return image
 
 
+# the depth plugin with a far cutoff: gazebo_ros_openni_kinect reads pointCloudCutoffMax
+# (gazebo_plugins/src/gazebo_ros_openni_kinect.cpp:105); gazebo_ros_depth_camera reads none
+# and keeps every depth above pointCloudCutoff (gazebo_ros_depth_camera.cpp:675, :762)
+CUTOFF_MAX_PLUGIN = "libgazebo_ros_openni_kinect.so"
+
+
 class DepthCamera(Camera):
     """gazebo_ros_openni_kinect and gazebo_ros_depth_camera on a ``depth`` sensor: the
-    camera's image and info (on ``ir/image_raw`` and ``ir/camera_info`` by default, as
-    those plugins), the depth image (``depthImageTopicName``, depth/image_raw: 32FC1,
-    metres along the optical axis, NaN outside ``pointCloudCutoff`` (0.4 m) to
-    ``pointCloudCutoffMax`` (5 m)) with its info (``depthImageCameraInfoTopicName``,
-    depth/camera_info), and the organised point cloud (``pointCloudTopicName``, points:
-    x y z rgb in the optical frame, x right, y down, z ahead; NaN where the depth image
-    has none), as gazebo_plugins fills them (a pixel's ray through (width - 1) / 2)."""
-
-    IMAGE_TOPIC = "ir/image_raw"
-    INFO_TOPIC = "ir/camera_info"
+    camera's image and info (on ``image_raw`` and ``camera_info`` by default: both plugins
+    set ``ir/...`` and then GazeboRosCameraUtils::Load sets these unconditionally,
+    gazebo_plugins/src/gazebo_ros_camera_utils.cpp:124, :132), the depth image
+    (``depthImageTopicName``, depth/image_raw: 32FC1, metres along the optical axis, NaN
+    at or below ``pointCloudCutoff`` (0.4 m) and, for the openni plugin alone, at or beyond
+    ``pointCloudCutoffMax`` (5 m); +inf where nothing is within the far clip) with its info
+    (``depthImageCameraInfoTopicName``, depth/camera_info), and the organised point cloud
+    (``pointCloudTopicName``, points: x y z rgb in the optical frame, x right, y down, z
+    ahead; NaN where the depth image has none), as gazebo_plugins fills them (a pixel's ray
+    through (width - 1) / 2)."""
 
     def __init__(self, context, spec, sensor):
         super().__init__(context, spec, sensor)
         self.cutoff = self.number("pointCloudCutoff", 0.4)
-        self.cutoff_max = self.number("pointCloudCutoffMax", 5.0)
+        self.cutoff_max = (self.number("pointCloudCutoffMax", 5.0)
+                           if spec.filename == CUTOFF_MAX_PLUGIN else np.inf)
         self.depth_out = self.publisher("depthImageTopicName", "depth/image_raw", Image)
         self.depth_info_out = self.publisher("depthImageCameraInfoTopicName",
                                              "depth/camera_info", CameraInfo)
@@ -274,8 +281,10 @@ class DepthCamera(Camera):
             self.depth_out, self.depth_info_out, self.points_out))
 
     def depth_image(self, depth: np.ndarray) -> np.ndarray:
-        """32-bit metres, NaN outside the cutoffs."""
-        inside = (depth > self.cutoff) & (depth < self.cutoff_max)
+        """32-bit metres, NaN outside the cutoffs (no far one but the openni plugin's)."""
+        inside = depth > self.cutoff
+        if np.isfinite(self.cutoff_max):
+            inside &= depth < self.cutoff_max
         return np.where(inside, depth, np.nan).astype(np.float32)
 
     def points(self, header_stamp, pixels: np.ndarray, depth: np.ndarray) -> PointCloud2:
