@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import threading
 from dataclasses import dataclass
-from typing import Dict, List, Sequence, Tuple
+from typing import Callable, Dict, List, Optional, Sequence, Tuple
 
 import rospy
 from moveit_msgs.msg import MoveItErrorCodes as Codes
@@ -72,12 +72,17 @@ class TrajectoryExecutionManager:
             controllers.pop(name)
         return chosen, sorted(left)
 
-    def execute(self, trajectory: JointTrajectory) -> Tuple[int, str]:
-        """Runs ``trajectory``; (MoveIt's error code, what happened)."""
+    def execute(self, trajectory: JointTrajectory,
+                preempted: Optional[Callable[[], bool]] = None) -> Tuple[int, str]:
+        """Runs ``trajectory``; (MoveIt's error code, what happened). ``preempted()``: the
+        goal that asks has been preempted (a stop heard before this execution began is
+        cleared here, so the goal is asked once more once it holds the manager)."""
         if not trajectory.points:
             return Codes.SUCCESS, "nothing to execute"
         with self._lock:
             self._stop.clear()
+            if preempted is not None and preempted():
+                return Codes.PREEMPTED, "preempted before execution: nothing was executed"
             return self._execute(trajectory)
 
     def _execute(self, trajectory: JointTrajectory) -> Tuple[int, str]:

@@ -28,8 +28,9 @@ from typing import Dict, List
 import actionlib
 import rospy
 from moveit_msgs.msg import (DisplayTrajectory, ExecuteTrajectoryAction, ExecuteTrajectoryResult,
-                             MoveGroupAction, MoveGroupFeedback, MoveItErrorCodes as Codes,
-                             PickupAction, PickupResult, PlaceAction, PlaceResult)
+                             MoveGroupAction, MoveGroupFeedback, MoveGroupResult,
+                             MoveItErrorCodes as Codes, PickupAction, PickupResult, PlaceAction,
+                             PlaceResult)
 from moveit_msgs.srv import (ApplyPlanningScene, GetCartesianPath, GetMotionPlan,
                              GetPlanningScene, GetPositionFK, GetPositionIK, GetStateValidity,
                              QueryPlannerInterfaces)
@@ -207,11 +208,13 @@ def main() -> int:
                                                    auto_start=False)
 
         def move(goal, handle):
-            result, text = planning.move(goal, lambda state: move_server.publish_feedback(
-                MoveGroupFeedback(state=state)))
+            result, text = planning.move(
+                goal, lambda state: move_server.publish_feedback(MoveGroupFeedback(state=state)),
+                lambda: move_server.current_goal != handle or
+                move_server.is_preempt_requested())
             shown(result.planned_trajectory, result.trajectory_start)
             _finish(move_server, handle, result.error_code.val, result, text)
-        move_server.register_goal_callback(lambda: _run(move_server, move))
+        move_server.register_goal_callback(lambda: _run(move_server, move, MoveGroupResult))
         move_server.register_preempt_callback(lambda: executor.stop() if executor else None)
         servers.append(move_server)
     if wanted("move_group/MoveGroupExecuteTrajectoryAction"):
@@ -219,11 +222,14 @@ def main() -> int:
                                                       ExecuteTrajectoryAction, auto_start=False)
 
         def execute(goal, handle):
-            code, text = planning.execute_trajectory(goal)
+            code, text = planning.execute_trajectory(
+                goal, lambda: execute_server.current_goal != handle or
+                execute_server.is_preempt_requested())
             result = ExecuteTrajectoryResult()
             result.error_code.val = code
             _finish(execute_server, handle, code, result, text)
-        execute_server.register_goal_callback(lambda: _run(execute_server, execute))
+        execute_server.register_goal_callback(lambda: _run(execute_server, execute,
+                                                           ExecuteTrajectoryResult))
         execute_server.register_preempt_callback(lambda: executor.stop() if executor else None)
         servers.append(execute_server)
     if wanted("move_group/MoveGroupPickPlaceAction"):
@@ -243,34 +249,54 @@ def main() -> int:
     return 0
 
 
-def _run(server, handler) -> None:
-    """Accepts the new goal (preempting a running one, as SimpleActionServer does) and runs
-    it in a thread of its own, so that a stop or a second goal is heard meanwhile."""
-    goal, handle = server.accept_new_goal(), server.current_goal
+def _run(server, handler, result_type) -> None:
+    """Accepts the new goal and runs it in a thread of its own, so that a stop or a second
+    goal is heard meanwhile. A goal still running is preempted first, its result saying
+    PREEMPTED (-7) as MoveIt's capabilities end a preempted goal (setPreempted with the
+    code: move_action_capability.cpp l. 89-90, execute_trajectory_action_capability.cpp
+    l. 77-79, noetic-devel 7c0343f0); its thread stops before executing anything (the
+    preempt callback has stopped an execution already running). The goal callback runs
+    under the action server's lock, which _finish takes too: a goal ends once."""
+    with server.action_server.lock:
+        if server.is_active():
+            server.current_goal.set_canceled(_result(result_type, Codes.PREEMPTED),
+                                             "preempted by a newer goal")
+        goal, handle = server.accept_new_goal(), server.current_goal
 
     def guarded():
-        # a fault of ours must end the goal, not leave the client waiting for ever
+        # a fault of ours must end the goal, not leave the client waiting for ever: with
+        # FAILURE, as MoveIt's move capability answers a planning pipeline that threw
+        # (move_action_capability.cpp l. 182-186, 214-218)
         try:
             handler(goal, handle)
         except Exception as error:  # pylint: disable=broad-except
             rospy.logerr("move_group: %s failed: %s\n%s", server.action_server.ns, error,
                          traceback.format_exc())
-            if server.current_goal == handle and server.is_active():
-                server.set_aborted(None, f"move_group failed: {type(error).__name__}: {error}")
+            with server.action_server.lock:
+                if server.current_goal == handle and server.is_active():
+                    server.set_aborted(_result(result_type, Codes.FAILURE),
+                                       f"move_group failed: {type(error).__name__}: {error}")
     threading.Thread(target=guarded, daemon=True).start()
+
+
+def _result(result_type, code: int):
+    result = result_type()
+    result.error_code.val = code
+    return result
 
 
 def _finish(server, handle, code: int, result, text: str) -> None:
     """Ends the goal ``handle`` unless a newer goal took its place (it was preempted)."""
-    if server.current_goal != handle or not server.is_active():
-        return
-    status = action_text_status(code)
-    if status == "succeeded":
-        server.set_succeeded(result, text)
-    elif status == "preempted":
-        server.set_preempted(result, text)
-    else:
-        server.set_aborted(result, text)
+    with server.action_server.lock:
+        if server.current_goal != handle or not server.is_active():
+            return
+        status = action_text_status(code)
+        if status == "succeeded":
+            server.set_succeeded(result, text)
+        elif status == "preempted":
+            server.set_preempted(result, text)
+        else:
+            server.set_aborted(result, text)
 
 
 def _not_provided(name: str, action, result_type):
