@@ -1,13 +1,18 @@
 """``<sensor type="imu">`` with ``libgazebo_ros_imu_sensor.so``: orientation, angular
 velocity and linear acceleration of the sensor's link, in the sensor's frame.
 
-From the sensor: ``<pose>`` (in the link), ``<update_rate>`` (Hz; 0 every step). From the
-plugin, as gazebo_ros (noetic): topicName (imu), frameName (the link), updateRateHZ
-(overrides update_rate when given), gaussianNoise (standard deviation on angular
-velocity and acceleration, seeded), xyzOffset, rpyOffset, robotNamespace.
+From the sensor: ``<pose>`` (in the link), ``<update_rate>`` (Hz; 0 every step): when the
+sensor measures. From the plugin, as gazebo_ros (noetic-devel f9e1a46,
+gazebo_plugins/src/gazebo_ros_imu_sensor.cpp) reads them: topicName (imu_data, :197),
+frameName (required: without it the plugin stops loading and publishes nothing, :207-210),
+updateRateHZ (1 Hz when absent, :221: at most one message per 1/updateRateHZ s of the
+sensor's update times, so never faster than the sensor; 0: every step, :99),
+gaussianNoise (standard deviation on angular velocity and acceleration, seeded),
+xyzOffset, rpyOffset, robotNamespace.
 
 The accelerometer reads specific force, as a real one does: at rest and level it reads
-+g upwards (9.8 on z). Acceleration is the change of velocity over the update period.
++g upwards (9.8 on z). Acceleration is the change of velocity between the sensor's
+updates. A message carries the time of the sensor's last update, as upstream's (:139-140).
 """
 from __future__ import annotations
 
@@ -35,13 +40,31 @@ class ImuSensor(Plugin):
         offset = vector3(self, "xyzOffset")
         rpy = vector3(self, "rpyOffset")
         self.mount = pb.multiplyTransforms(position, orientation, offset, quaternion_from_rpy(*rpy))
-        rate = self.number("updateRateHZ", self._update_rate(sensor))
-        self.rate = Rate(rate)
+        frame = self.param("frameName")
+        if frame is None:  # gazebo_plugins/src/gazebo_ros_imu_sensor.cpp:207-210, :71-75
+            raise PluginError(
+                f"sensor '{sensor.name}' needs <frameName> (the messages' frame, e.g. "
+                f"<frameName>{self.link}</frameName>): gazebo_ros_imu_sensor stops loading "
+                "without it ('missing <frameName>, cannot proceed') and publishes nothing")
+        # the sensor measures at its <update_rate>; the plugin publishes a measurement once
+        # its time is 1/updateRateHZ past the last message's (1 Hz when absent, 0: every
+        # step): gazebo_plugins/src/gazebo_ros_imu_sensor.cpp:97-100, :221
+        self.sensor_rate = Rate(self._update_rate(sensor))
+        self.publish_period_ns = self._publish_period_ns(self.number("updateRateHZ", 1.0))
         self.noise = self.number("gaussianNoise", 0.0)
-        self.frame_id = self.frame(self.param("frameName", self.link))
-        self.output = context.bus.publisher(self.topic(self.param("topicName", "imu")), Imu,
-                                            queue_size=1)
+        self.frame_id = self.frame(frame)
+        self.output = context.bus.publisher(self.topic(self.param("topicName", "imu_data")),
+                                            Imu, queue_size=1)
         self._last = None  # (time ns, velocity of the sensor point in the world)
+        self._measured = None  # (time ns, orientation, specific force, body rate)
+        # upstream's last_time starts at the sensor's LastUpdateTime when the plugin loads:
+        # 0, a sensor loaded and not yet updated (gazebo_ros_imu_sensor.cpp:89)
+        self._published_ns = 0
+
+    @staticmethod
+    def _publish_period_ns(rate_hz: float) -> float:
+        """Upstream skips while (sensor time - last) < 1.0 / updateRateHZ (seconds)."""
+        return 1e9 / rate_hz if rate_hz > 0 else 0.0
 
     def _update_rate(self, sensor) -> float:
         """The sensor's <update_rate> (0, every step, when absent or unreadable: Gazebo's
@@ -72,9 +95,8 @@ class ImuSensor(Plugin):
         velocity = linear + np.cross(angular, np.asarray(position) - np.asarray(link_position))
         return orientation, velocity, angular
 
-    def after_step(self, now_ns: int) -> None:
-        if not self.rate.due(now_ns):
-            return
+    def _measure(self, now_ns: int) -> None:
+        """The sensor's update: what it reads now (acceleration since its last update)."""
         orientation, velocity, angular = self._sensor_state()
         if self._last is None or now_ns <= self._last[0]:
             acceleration = np.zeros(3)
@@ -84,11 +106,24 @@ class ImuSensor(Plugin):
         to_sensor = quaternion_matrix(orientation).T
         specific_force = to_sensor @ (acceleration - np.asarray(self.context.gravity))
         body_rate = to_sensor @ angular
+        self._measured = (now_ns, orientation, specific_force, body_rate)
+
+    def after_step(self, now_ns: int) -> None:
+        if self.sensor_rate.due(now_ns):
+            self._measure(now_ns)
+        if self._measured is None:
+            return
+        measured_ns, orientation, specific_force, body_rate = self._measured
+        if measured_ns - self._published_ns < self.publish_period_ns:
+            return
+        self._published_ns = measured_ns
+        if not self.context.bus.listened(self.output):
+            return  # upstream fills and publishes only while subscribed (:102)
         if self.noise > 0:
             specific_force = specific_force + self.context.rng.normal(0.0, self.noise, 3)
             body_rate = body_rate + self.context.rng.normal(0.0, self.noise, 3)
         message = Imu()
-        message.header.stamp = stamp(now_ns)
+        message.header.stamp = stamp(measured_ns)
         message.header.frame_id = self.frame_id
         message.orientation.x, message.orientation.y, message.orientation.z, \
             message.orientation.w = orientation
@@ -104,5 +139,6 @@ class ImuSensor(Plugin):
         self.output.publish(message)
 
     def reset(self, now_ns: int) -> None:
-        self.rate.reset(now_ns)
-        self._last = None
+        # time goes on through a reset here, so the last message's time stays
+        self.sensor_rate.reset(now_ns)
+        self._last = self._measured = None
