@@ -8,7 +8,9 @@ gazebo_ros reads it; 0 or false: no limit),
 commandTopic (cmd_vel), odometryTopic (odom), odometryFrame (odom),
 robotBaseFrame (base_footprint), publishWheelTF (false), publishOdomTF (true),
 publishWheelJointState (false), publishTf (true: false turns all TF off),
-odometrySource (world | encoder, or 1 | 0; world), updateRate (100 Hz), robotNamespace.
+odometrySource (exactly ``world`` or ``encoder``, case counting; any other text is world with
+a warning, as Noetic's map lookup: gazebo_plugins/src/gazebo_ros_diff_drive.cpp:104-107),
+updateRate (100 Hz), robotNamespace.
 
 The wheels' speeds are Noetic's ``GazeboRosDiffDrive::getWheelVelocities``: the joint
 ``<leftJoint>`` names turns at (v - w s/2)/r, the one ``<rightJoint>`` names at
@@ -54,10 +56,14 @@ class DiffDrive(DriveBase):
         self.publish_odom_tf = self.flag("publishOdomTF", True) and self.publish_tf
         self.publish_wheel_tf = self.flag("publishWheelTF", False) and self.publish_tf
         self.publish_joint_state = self.flag("publishWheelJointState", False)
-        source = (self.param("odometrySource", "world") or "world").strip().lower()
-        if source not in ("world", "encoder", "1", "0"):
-            source = self.unreadable("odometrySource", source, "world or encoder", "world")
-        self.encoder = source in ("encoder", "0")
+        # Noetic looks the text up, case counting, in {"encoder", "world"}; another text
+        # warns and keeps world (gazebo_plugins/src/gazebo_ros_diff_drive.cpp:104-107,
+        # gazebo_plugins/include/gazebo_plugins/gazebo_ros_utils.h:281-293)
+        source = self.param("odometrySource", "world")
+        if source not in ("world", "encoder"):
+            source = self.unreadable("odometrySource", source,
+                                     "'world' or 'encoder' (case counts)", "world")
+        self.encoder = source == "encoder"
         self.rate = Rate(self.number("updateRate", 100.0))
         self.joints_out = (context.bus.publisher(self.topic("joint_states"), JointState,
                                                  queue_size=1)
