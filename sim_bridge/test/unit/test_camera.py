@@ -311,3 +311,20 @@ def test_a_deleted_camera_closes_its_topics(scene, bus):
     scene.delete("kinect_bot")
     assert {"/stereo/left/image_raw", "/stereo/right/camera_info", "/kinect/points",
             "/kinect/depth/image_raw"} <= set(bus.closed)
+
+
+@pytest.mark.parametrize("tf_prefix, frame_id", [("", ""), ("p", "p/")])
+def test_a_camera_without_frame_name_stamps_an_empty_frame(world, bus, tf_prefix, frame_id):
+    """No <frameName>: GazeboRosCameraUtils only logs "defaults to /world" and leaves its
+    frame_name_ empty (gazebo_plugins/src/gazebo_ros_camera_utils.cpp:146-149), then
+    tf::resolve(tf_prefix, "") makes it "" or "<prefix>/" (:298): the image, its info and a
+    depth camera's cloud carry that frame (before: world)."""
+    world.spawn_urdf("cam_bot", robot().replace("<frameName>camera_optical</frameName>", ""),
+                     (0, 0, CAMERA_HEIGHT), tf_prefix=tf_prefix)
+    world.spawn_urdf("kinect_bot", kinect().replace(
+        "<frameName>camera_optical</frameName>", ""), (0, 2, CAMERA_HEIGHT),
+        tf_prefix=tf_prefix)
+    run(world, 0.15)
+    for topic in ("/front/image_raw", "/front/camera_info", "/kinect/points",
+                  "/kinect/depth/image_raw"):
+        assert bus.last(topic).header.frame_id == frame_id, topic

@@ -11,10 +11,10 @@ along the sensor frame's +x, +z up), ``<update_rate>`` (Hz of simulated time; 0 
 ``<far>`` (100), ``<noise>`` gaussian mean and stddev on intensities from 0 to 1 (drawn from
 the world's seeded generator). From the plugin, as gazebo_plugins' camera utilities read
 them: ``cameraName`` (empty), ``imageTopicName`` (image_raw), ``cameraInfoTopicName``
-(camera_info), ``frameName`` (/world; the model's tf_prefix applied), ``updateRate`` (0:
-the sensor's), ``hackBaseline`` (0), ``focalLength``, ``Cx``, ``Cy``, ``CxPrime`` (0:
-computed), ``distortionK1`` ``K2`` ``K3`` ``T1`` ``T2`` (0). Topics are
-``<robotNamespace>/<cameraName>/<topic>``.
+(camera_info), ``frameName`` (empty, as upstream leaves it; the model's tf_prefix
+applied), ``updateRate`` (0: the sensor's), ``hackBaseline`` (0), ``focalLength``, ``Cx``,
+``Cy``, ``CxPrime`` (0: computed), ``distortionK1`` ``K2`` ``K3`` ``T1`` ``T2`` (0). Topics
+are ``<robotNamespace>/<cameraName>/<topic>``.
 
 CameraInfo is Gazebo's: f = width / (2 tan(hfov / 2)) on both axes (square pixels),
 cx = (width + 1) / 2, cy = (height + 1) / 2, P's fourth column -f * hackBaseline, plumb_bob
@@ -159,7 +159,10 @@ class Camera(SensorPlugin):
                 f"simulator runs at about {min(1.0, 1.0 / (frames * frame_seconds)):.2g} x real "
                 "time (nothing is rendered while nobody does). A smaller <image> or a lower "
                 "<update_rate> keeps it near real time")
-        self.frame_id = self.frame(self.param("frameName", "/world"))
+        # no <frameName>: GazeboRosCameraUtils logs "defaults to /world" and leaves its frame
+        # empty (gazebo_plugins/src/gazebo_ros_camera_utils.cpp:146-149); tf::resolve of ""
+        # is "" or "<tf_prefix>/" (:298)
+        self.frame_id = self.frame(self.param("frameName", ""))
         camera_name = (self.param("cameraName", "") or "") + (head.suffix if head else "")
         self.camera_name = camera_name.strip("/")
         self.info = self._camera_info(None if head is None else head.baseline)
