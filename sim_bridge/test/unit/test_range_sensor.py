@@ -72,8 +72,31 @@ def test_nothing_in_range_reads_infinity(world, bus):
     assert math.isinf(bus.last("/sonar/front").range)
 
 
-def test_an_unknown_radiation_takes_the_default_named(world, bus):
-    world.spawn_urdf("sonar_bot", robot().replace("infrared", "laser"), (0, 0, 0.1))
+ULTRASOUND, INFRARED = 0, 1  # sensor_msgs/Range
+
+
+@pytest.mark.parametrize("written, radiation_type", [
+    (None, ULTRASOUND), ("ultrasound", ULTRASOUND), ("infrared", INFRARED)])
+def test_radiation_as_written(world, bus, written, radiation_type):
+    """gazebo_plugins/src/gazebo_ros_range.cpp:127-134: <radiation> absent is ultrasound;
+    :170-173: "ultrasound" is ULTRASOUND, "infrared" (as any other text) INFRARED."""
+    tag = "" if written is None else f"<radiation>{written}</radiation>"
+    world.spawn_urdf("sonar_bot", robot().replace("<radiation>infrared</radiation>", tag),
+                     (0, 0, 0.1))
     run(world, 0.1)
-    assert any("<radiation> 'laser'" in w and "ultrasound" in w for w in bus.warnings)
-    assert bus.last("/sonar/front").radiation_type == 0  # ULTRASOUND
+    assert bus.last("/sonar/front").radiation_type == radiation_type
+    assert not [w for w in bus.warnings if "<radiation>" in w]
+
+
+@pytest.mark.parametrize("written", ["Ultrasound", "ULTRASOUND", "sonar", "laser", ""])
+def test_any_text_but_ultrasound_is_infrared_and_named(world, bus, written):
+    """gazebo_plugins/src/gazebo_ros_range.cpp:170-173 compare the text with "ultrasound"
+    exactly; anything else, an empty tag included, is INFRARED, silently there (before:
+    lower-cased, and an unknown text was ULTRASOUND). Here a warning names the text and
+    what it reads as."""
+    world.spawn_urdf("sonar_bot", robot().replace(
+        "<radiation>infrared</radiation>", f"<radiation>{written}</radiation>"), (0, 0, 0.1))
+    run(world, 0.1)
+    assert bus.last("/sonar/front").radiation_type == INFRARED
+    (warning,) = [w for w in bus.warnings if "<radiation>" in w]
+    assert f"'{written}'" in warning and "INFRARED" in warning

@@ -5,7 +5,8 @@ The sensor's rays as Gazebo casts them (``<ray><scan>`` horizontal and vertical 
 min_angle and max_angle; ``<range>`` min and max; ``<pose>`` in the link's frame;
 ``<update_rate>``), the reading the nearest of them, as gazebo_ros_range takes it. From the
 plugin, with gazebo_ros_range's defaults: ``topicName`` (/range), ``frameName`` (/world; the
-model's tf_prefix applied), ``radiation`` (ultrasound or infrared; ultrasound), ``fov``
+model's tf_prefix applied), ``radiation`` (ultrasound when absent; exactly ``ultrasound`` is
+ULTRASOUND and any other text INFRARED, as upstream compares it), ``fov``
 (0.05 rad, reported in the message), ``gaussianNoise`` (0, added to a reading within range,
 seeded), ``updateRate`` (0: the sensor's). Nothing within range reads ``+inf`` (REP 117), where
 Gazebo reports the maximum range, as sim_bridge's laser does.
@@ -19,7 +20,6 @@ from sensor_msgs.msg import Range as RangeMessage
 from sim_bridge.plugins.base import PluginError, Rate, SensorPlugin, stamp
 from sim_bridge.plugins.laser import MAX_BEAMS, _count, _number
 
-RADIATION = {"ultrasound": RangeMessage.ULTRASOUND, "infrared": RangeMessage.INFRARED}
 
 
 class Range(SensorPlugin):
@@ -50,14 +50,19 @@ class Range(SensorPlugin):
         plugin_rate = self.number("updateRate", 0.0)
         self.rate = Rate(plugin_rate if plugin_rate > 0 else
                          _number(element, "update_rate", 0.0, name))
-        radiation = (self.param("radiation", "ultrasound") or "ultrasound").strip().lower()
-        if radiation not in RADIATION:
-            radiation = self.unreadable("radiation", radiation, "ultrasound or infrared",
-                                        "ultrasound")
+        # absent: ultrasound; then exactly "ultrasound" is ULTRASOUND and any other text
+        # INFRARED (gazebo_plugins/src/gazebo_ros_range.cpp:127-134, :170-173)
+        radiation = self.param("radiation", "ultrasound")
+        if radiation not in ("ultrasound", "infrared"):
+            context.bus.warn(
+                f"model '{context.model_name}': plugin '{spec.name}' ({spec.filename}): "
+                f"<radiation> '{radiation}' reads as INFRARED, as gazebo_ros_range reads every "
+                "text but exactly 'ultrasound'; write 'ultrasound' or 'infrared'")
         self.noise = self.number("gaussianNoise", 0.0)
         self.message = RangeMessage()
         self.message.header.frame_id = self.frame(self.param("frameName", "/world"))
-        self.message.radiation_type = RADIATION[radiation]
+        self.message.radiation_type = (RangeMessage.ULTRASOUND if radiation == "ultrasound"
+                                       else RangeMessage.INFRARED)
         self.message.field_of_view = self.number("fov", 0.05)
         self.message.min_range, self.message.max_range = self.range_min, self.range_max
         self.output = context.bus.publisher(self.topic(self.param("topicName", "/range")),
