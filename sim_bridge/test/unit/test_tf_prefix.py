@@ -31,3 +31,27 @@ def test_the_diff_drive_frames_carry_the_prefix_and_no_namespace(world, bus, dif
     run(world, 0.1)
     odometry = bus.last("/r1/odom")
     assert (odometry.header.frame_id, odometry.child_frame_id) == (odom, base)
+
+
+@pytest.mark.parametrize("written,prefix,published", [
+    ("/world", "r1", "world"),        # absolute: the slash dropped, no prefix (tf.cpp:162-166)
+    ("world", "r1", "r1/world"),
+    ("/world", "", "world"),
+    ("chassis", "", "chassis"),
+])
+def test_a_frame_written_with_a_slash_is_absolute(world, bus, written, prefix, published):
+    """gazebo_ros_p3d's <frameName> (its odometry's header) through tf::resolve (ros/geometry
+    noetic-devel fe344b6, tf/src/tf.cpp:159-185)."""
+    xml = f"""<robot name="puck">
+  <link name="chassis">
+    <inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+    <collision><geometry><box size="0.2 0.2 0.2"/></geometry></collision>
+  </link>
+  <gazebo><plugin name="truth" filename="libgazebo_ros_p3d.so">
+    <bodyName>chassis</bodyName><topicName>truth</topicName><frameName>{written}</frameName>
+    <updateRate>100</updateRate>
+  </plugin></gazebo>
+</robot>"""
+    world.spawn_urdf("puck", xml, (0, 0, 0.5), namespace="/", tf_prefix=prefix)
+    run(world, 0.05)
+    assert bus.last("/truth").header.frame_id == published

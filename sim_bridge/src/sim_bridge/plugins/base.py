@@ -259,8 +259,12 @@ class Plugin:
         return resolve_topic(self.namespace, name)
 
     def frame(self, name: str) -> str:
-        """A frame name with the model's tf_prefix, as tf::resolve makes it."""
-        name = name.lstrip("/")
+        """A frame name with the model's tf_prefix, as tf::resolve makes it (ros/geometry
+        noetic-devel fe344b6, tf/src/tf.cpp:159-185): a name that starts with
+        '/' is absolute, its slash dropped and no prefix added (``/world`` stays
+        ``world``); any other gets the prefix."""
+        if name.startswith("/"):
+            return name.lstrip("/")
         prefix = self.context.tf_prefix.strip("/")
         return f"{prefix}/{name}" if prefix else name
 

@@ -89,9 +89,10 @@ class P3D(Plugin):
             angular = angular + rng.normal(0.0, self.noise, 3)
         message = Odometry()
         message.header.stamp = stamp(now_ns)
-        message.header.frame_id = (self.reference if self.reference in WORLD_FRAMES
-                                   else self.frame(self.reference))
-        message.child_frame_id = self.frame(self.body)
+        # the frame through tf::resolve with the tf_prefix, the body's link as written
+        # (gazebo_plugins/src/gazebo_ros_p3d.cpp:144-146, :254, :258)
+        message.header.frame_id = self.frame(self.reference)
+        message.child_frame_id = self.body
         pose = message.pose.pose
         pose.position.x, pose.position.y, pose.position.z = position.tolist()
         pose.orientation.x, pose.orientation.y, pose.orientation.z, pose.orientation.w = \
