@@ -7,7 +7,7 @@ twist in the body frame.
 from __future__ import annotations
 
 import math
-from typing import Sequence, Tuple
+from typing import Optional, Sequence, Tuple
 
 from geometry_msgs.msg import TransformStamped, Twist
 from nav_msgs.msg import Odometry
@@ -50,15 +50,23 @@ class DriveBase(Plugin):
         bus = self.context.bus
         return bus.listened(self.odom_out) or (with_tf and bus.listened())
 
-    def publish_world_odometry(self, now_ns: int, covariance_matrix: list, with_tf: bool) -> None:
-        """The true pose as odometry (Gazebo's "world" source), and as TF when asked."""
+    def publish_world_odometry(self, now_ns: int, covariance_matrix: list, with_tf: bool,
+                               message_z: Optional[float] = None) -> None:
+        """The true pose as odometry (Gazebo's "world" source), and as TF when asked;
+        ``message_z``, when given, is the message's position.z (the TF keeps the true z)."""
         if not self.odometry_listened(with_tf):
             return
-        odometry = self.odometry_message(now_ns, *self.world_odometry(), covariance_matrix,
-                                         covariance_matrix)
+        position, orientation, twist = self.world_odometry()
+        true_z = position[2]
+        if message_z is not None:
+            position = (position[0], position[1], message_z)
+        odometry = self.odometry_message(now_ns, position, orientation, twist,
+                                         covariance_matrix, covariance_matrix)
         self.odom_out.publish(odometry)
         if with_tf:
-            self.context.bus.send_transforms([self.odometry_transform(odometry)])
+            transform = self.odometry_transform(odometry)
+            transform.transform.translation.z = true_z
+            self.context.bus.send_transforms([transform])
 
     def _on_command(self, message: Twist) -> None:
         """rospy's thread: checks and stores the command, nothing else."""

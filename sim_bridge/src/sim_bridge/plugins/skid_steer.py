@@ -10,7 +10,10 @@ updateRate (100 Hz), covariance_x (0.0001), covariance_y (0.0001), covariance_ya
 (0.01), robotNamespace.
 
 As in Gazebo, odometry is the true pose of the robot (a skid-steer robot's wheels slip
-when it turns, so their speeds say little), with the given covariances.
+when it turns, so their speeds say little), with the given covariances on the pose's and
+the twist's diagonals (gazebo_plugins/src/gazebo_ros_skid_steer_drive.cpp:208-230,
+:460-465, :481-486), and position.z 0: Noetic's message never sets it (:453-454), while
+the transform, when broadcastTF, has the true z (:441-448).
 """
 from __future__ import annotations
 
@@ -33,6 +36,8 @@ class SkidSteer(DriveBase):
         self.torque = self.number("torque", 5.0)
         self.broadcast_tf = self.flag("broadcastTF", False)
         self.rate = Rate(self.number("updateRate", 100.0))
+        # gazebo_plugins/src/gazebo_ros_skid_steer_drive.cpp:208-230, on both diagonals
+        # (:460-465, :481-486)
         self.covariance = covariance(self.number("covariance_x", 0.0001),
                                      self.number("covariance_y", 0.0001),
                                      self.number("covariance_yaw", 0.01))
@@ -52,7 +57,10 @@ class SkidSteer(DriveBase):
 
     def after_step(self, now_ns: int) -> None:
         if self.rate.due(now_ns):
-            self.publish_world_odometry(now_ns, self.covariance, self.broadcast_tf)
+            # gazebo_plugins/src/gazebo_ros_skid_steer_drive.cpp:453-454: position.z is
+            # never set in the message; the transform has the pose's z (:441-448)
+            self.publish_world_odometry(now_ns, self.covariance, self.broadcast_tf,
+                                        message_z=0.0)
 
     def reset(self, now_ns: int) -> None:
         super().reset(now_ns)
