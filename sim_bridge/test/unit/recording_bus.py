@@ -18,6 +18,7 @@ class _Handle:
 class RecordingBus(Bus):
     def __init__(self, params=None):
         self.published = {}
+        self.advertised = []  # every topic a publisher was opened on, in order
         self.subscriptions = {}
         self.warnings = []
         self.debugs = []  # what verbose:=true would print
@@ -28,6 +29,7 @@ class RecordingBus(Bus):
         self.unheard = set()  # topics nobody listens to ("/tf" included); all heard by default
 
     def publisher(self, topic, msg_class, queue_size=10, latch=False):
+        self.advertised.append(topic)
         return _Handle(self, topic)
 
     def subscriber(self, topic, msg_class, callback):

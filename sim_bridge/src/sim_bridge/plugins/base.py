@@ -238,11 +238,30 @@ class Plugin:
         return default
 
     def flag(self, tag: str, default: bool) -> bool:
+        """A boolean as sdformat's ``Element::Get<bool>`` reads one (sdformat 9,
+        include/sdf/Param.hh, Param::Get): ``true`` or ``1``, any case, is true; any other
+        text false."""
         text = self.spec.text(tag)
         if text is None or text == "":
             self.spec.use_default(tag, default)
             return default
         return text.strip().lower() in ("1", "true")
+
+    def gazebo_ros_flag(self, tag: str, default: bool) -> bool:
+        """A boolean as gazebo_plugins' ``GazeboRos::getParameterBoolean`` reads one
+        (gazebo_ros_pkgs noetic-devel f9e1a46, gazebo_plugins/src/gazebo_ros_utils.cpp:92-123):
+        absent, the default; ``true`` or ``1`` true and ``false`` or ``0`` false, any case;
+        any other text, an empty tag included, warns and keeps the default."""
+        text = self.spec.text(tag)
+        if text is None:
+            self.spec.use_default(tag, default)
+            return default
+        word = text.strip().lower()
+        if word in ("true", "1"):
+            return True
+        if word in ("false", "0"):
+            return False
+        return self.unreadable(tag, text, "true, false, 1 or 0 (any case)", default)
 
     def joint(self, tag: str, default: Optional[str] = None) -> str:
         name = self.spec.text(tag, default)

@@ -7,7 +7,10 @@ wheelDiameter (0.15 m), wheelTorque (5 N m), wheelAcceleration (m/s^2 at the whe
 gazebo_ros reads it; 0 or false: no limit),
 commandTopic (cmd_vel), odometryTopic (odom), odometryFrame (odom),
 robotBaseFrame (base_footprint), publishWheelTF (false), publishOdomTF (true),
-publishWheelJointState (false), publishTf (true: false turns all TF off),
+publishWheelJointState (false: true publishes the wheels' names and positions on
+joint_states), publishTf (true: false advertises no odometry topic and publishes neither the
+odometry nor its TF; the wheels' TF and joint states go out all the same, as Noetic's:
+gazebo_plugins/src/gazebo_ros_diff_drive.cpp:167-171, :272-274),
 odometrySource (exactly ``world`` or ``encoder``, case counting; any other text is world with
 a warning, as Noetic's map lookup: gazebo_plugins/src/gazebo_ros_diff_drive.cpp:104-107),
 updateRate (100 Hz), robotNamespace.
@@ -28,6 +31,7 @@ from __future__ import annotations
 
 import pybullet as pb
 from geometry_msgs.msg import TransformStamped
+from nav_msgs.msg import Odometry
 from sensor_msgs.msg import JointState
 
 from sim_bridge.drive_kinematics import body_twist, integrate, limit_change, wheel_speeds
@@ -35,27 +39,38 @@ from sim_bridge.plugins.base import PluginError, Rate, stamp
 from sim_bridge.plugins.drive_base import DriveBase, covariance
 from sim_bridge.poses import quaternion_from_rpy
 
-# gazebo_ros's odometry covariance: x, y and yaw known well, z, roll, pitch not at all.
+# gazebo_ros's odometry covariance: x, y and yaw known well, z, roll, pitch not at all
+# (gazebo_plugins/src/gazebo_ros_diff_drive.cpp:461-467); nothing sets the twist's: all 0
 POSE_COVARIANCE = covariance(1e-5, 1e-5, 1e-3)
-TWIST_COVARIANCE = covariance(1e-5, 1e-5, 1e-3)
+TWIST_COVARIANCE = [0.0] * 36
 
 
 class DiffDrive(DriveBase):
     ABSENT_NAMESPACE_IS_MODEL = EMPTY_NAMESPACE_IS_MODEL = True  # gazebo_plugins' GazeboRos
 
     def __init__(self, context, spec):
-        super().__init__(context, spec, spec.text("commandTopic", "cmd_vel"),
-                         spec.text("odometryTopic", "odom"))
+        super().__init__(context, spec, spec.text("commandTopic", "cmd_vel"), None)
+        odometry_topic = self.param("odometryTopic", "odom")
         self.left_joint = self.joint("leftJoint", "left_joint")
         self.right_joint = self.joint("rightJoint", "right_joint")
         self.separation, self.radius = self.wheel_geometry(0.34, 0.15)
         self.torque = self.number("wheelTorque", 5.0)
         # m/s^2 at the rim, as gazebo_ros compares it with the joint's speed times the radius
         self.acceleration = self.number("wheelAcceleration", 0.0, false_value=0.0)
+        # read through GazeboRos::getParameterBoolean: another text than true, false, 1 or 0
+        # keeps the default (gazebo_plugins/src/gazebo_ros_diff_drive.cpp:96-98,
+        # gazebo_plugins/src/gazebo_ros_utils.cpp:92-123)
+        self.publish_wheel_tf = self.gazebo_ros_flag("publishWheelTF", False)
+        self.publish_odom_tf = self.gazebo_ros_flag("publishOdomTF", True)
+        self.publish_joint_state = self.gazebo_ros_flag("publishWheelJointState", False)
+        # sdformat's Get<bool> (gazebo_plugins/src/gazebo_ros_diff_drive.cpp:118-124): false
+        # advertises no odometry topic (:167-171) and skips publishOdometry, the odom TF
+        # with it (:272); the wheels' TF and joint states do not depend on it (:273-274)
         self.publish_tf = self.flag("publishTf", True)
-        self.publish_odom_tf = self.flag("publishOdomTF", True) and self.publish_tf
-        self.publish_wheel_tf = self.flag("publishWheelTF", False) and self.publish_tf
-        self.publish_joint_state = self.flag("publishWheelJointState", False)
+        self.publish_odom_tf = self.publish_odom_tf and self.publish_tf
+        if self.publish_tf:
+            self.odom_out = context.bus.publisher(self.topic(odometry_topic), Odometry,
+                                                  queue_size=1)
         # Noetic looks the text up, case counting, in {"encoder", "world"}; another text
         # warns and keeps world (gazebo_plugins/src/gazebo_ros_diff_drive.cpp:104-107,
         # gazebo_plugins/include/gazebo_plugins/gazebo_ros_utils.h:281-293)
@@ -100,7 +115,7 @@ class DiffDrive(DriveBase):
             return
         time = stamp(now_ns)
         transforms = []
-        if self.odometry_listened(self.publish_odom_tf):
+        if self.publish_tf and self.odometry_listened(self.publish_odom_tf):
             odometry = self._odometry(now_ns)
             self.odom_out.publish(odometry)
             if self.publish_odom_tf:
@@ -110,13 +125,12 @@ class DiffDrive(DriveBase):
         if transforms:
             self.context.bus.send_transforms(transforms)
         if self.joints_out is not None:
+            # gazebo_plugins/src/gazebo_ros_diff_drive.cpp:199-218: names and positions only
             states = self.context.robot.joint_states([self.left_joint, self.right_joint])
             message = JointState()
             message.header.stamp = time
             message.name = [self.left_joint, self.right_joint]
             message.position = [s[0] for s in states]
-            message.velocity = [s[1] for s in states]
-            message.effort = [s[2] for s in states]
             self.joints_out.publish(message)
 
     def _integrate_encoders(self, now_ns: int) -> None:

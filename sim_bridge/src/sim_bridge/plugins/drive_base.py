@@ -25,13 +25,15 @@ def covariance(x: float, y: float, yaw: float, others: float = 1e12) -> list:
 
 
 class DriveBase(Plugin):
-    def __init__(self, context, spec, command_topic: str, odometry_topic: str):
+    def __init__(self, context, spec, command_topic: str, odometry_topic: Optional[str]):
+        """``odometry_topic`` None: no odometry publisher (``odom_out`` None)."""
         super().__init__(context, spec)
         self.odom_frame = self.frame(self.param("odometryFrame", "odom"))
         self.base_frame = self.frame(self.param("robotBaseFrame", "base_footprint"))
         self.command_topic = self.topic(command_topic)
         self.command: Tuple[float, float] = (0.0, 0.0)
-        self.odom_out = context.bus.publisher(self.topic(odometry_topic), Odometry, queue_size=1)
+        self.odom_out = None if odometry_topic is None else \
+            context.bus.publisher(self.topic(odometry_topic), Odometry, queue_size=1)
         self._subscription = context.bus.subscriber(self.command_topic, Twist, self._on_command)
 
     def wheel_geometry(self, separation_default: float, diameter_default: float):
@@ -48,7 +50,8 @@ class DriveBase(Plugin):
         the message for nobody cost 26 us (a quarter of the simulator's fixed cost per
         simulated second at a 1/240 s step, profiled)."""
         bus = self.context.bus
-        return bus.listened(self.odom_out) or (with_tf and bus.listened())
+        return (self.odom_out is not None and bus.listened(self.odom_out)) or \
+            (with_tf and bus.listened())
 
     def publish_world_odometry(self, now_ns: int, covariance_matrix: list, with_tf: bool,
                                message_z: Optional[float] = None) -> None:
