@@ -1,5 +1,7 @@
 """gazebo_ros_bumper: what touches the named collision, with the force it bears, as the
-world has it (a 2 kg crate resting on a bumper plate presses it with 2 g newtons)."""
+world has it (a 2 kg crate resting on a bumper plate presses it with 2 g newtons), in the
+world's coordinates whatever <frameName> says, as Noetic's (gazebo_ros_pkgs noetic-devel
+f9e1a46, gazebo_plugins/src/gazebo_ros_bumper.cpp)."""
 import pytest
 
 from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec
@@ -26,9 +28,9 @@ def robot(collision="base_link_fixed_joint_lump__bumper_collision", frame=""):
       </sensor></gazebo></robot>"""
 
 
-def crate():
+def crate(x=0.0, y=0.0):
     box = ShapeSpec("box", size=(0.2, 0.2, 0.2))
-    return ModelSpec("crate", False, pose=(0, 0, 0.35, 0, 0, 0), links=[LinkSpec(
+    return ModelSpec("crate", False, pose=(x, y, 0.35, 0, 0, 0), links=[LinkSpec(
         "link", collisions=[box], visuals=[box], mass=CRATE_MASS,
         inertia=(0.013, 0.013, 0.013))])
 
@@ -52,14 +54,49 @@ def test_a_crate_on_the_plate_presses_it_with_its_weight(world, bus):
     assert all(p.z == pytest.approx(0.22, abs=0.005) for p in state.contact_positions)
 
 
-def test_contacts_in_a_link_frame(world, bus):
-    world.spawn_urdf("bot", robot(frame="<frameName>bumper</frameName>"), (0, 0, 0.1))
-    world.add_sdf_model(crate())
+def test_frame_name_names_the_header_only_and_the_contacts_stay_in_the_world(world, bus):
+    """gazebo_plugins/src/gazebo_ros_bumper.cpp:151: <frameName> is the header's frame_id;
+    the code that would move the contacts into that link is commented out (:155-187,
+    :193-201) and the frame used is the identity (:202-208), so positions, normals and
+    wrenches (:266-315) are in the world's coordinates. Before: in the named link's frame
+    (the plate's top face 0.01 m above it)."""
+    world.spawn_urdf("bot", robot(frame="<frameName>bumper</frameName>"), (1.0, 2.0, 0.1))
+    world.add_sdf_model(crate(1.0, 2.0))
     run(world, 1.0)
-    (state,) = bus.last("/plate_bumper").states
-    assert bus.last("/plate_bumper").header.frame_id == "bumper"
-    # the plate's top face, 0.01 m above the bumper link's origin
-    assert all(p.z == pytest.approx(0.01, abs=0.005) for p in state.contact_positions)
+    message = bus.last("/plate_bumper")
+    assert message.header.frame_id == "bumper"
+    (state,) = message.states
+    # the plate's top face, 0.22 m above the ground, under the crate at (1, 2)
+    assert all(p.z == pytest.approx(0.22, abs=0.005) for p in state.contact_positions)
+    assert all(abs(p.x - 1.0) <= 0.1 + 1e-3 and abs(p.y - 2.0) <= 0.1 + 1e-3
+               for p in state.contact_positions)
+    assert all(n.z == pytest.approx(-1.0, abs=1e-6) for n in state.contact_normals)
+    assert state.total_wrench.force.z == pytest.approx(-CRATE_MASS * G, rel=0.02)
+
+
+@pytest.mark.parametrize("frame", ["base_scan", "map", "/odom"])
+def test_any_frame_name_is_the_header_as_written_without_a_warning(world, bus, frame):
+    """gazebo_plugins/src/gazebo_ros_bumper.cpp:95-101, :116: whatever <frameName> names, a
+    link of the model or not, is the header's frame through tf::resolve (a leading slash
+    dropped); nothing is looked up, nothing warned. Before: a name that is no link of the
+    model warned and became world."""
+    world.spawn_urdf("bot", robot(frame=f"<frameName>{frame}</frameName>"), (0, 0, 0.1))
+    run(world, 0.1)
+    assert bus.last("/plate_bumper").header.frame_id == frame.lstrip("/")
+    assert not [w for w in bus.warnings if "frameName" in w]
+
+
+@pytest.mark.parametrize("frame, expected", [("", "world"), ("<frameName>bumper</frameName>",
+                                                              "bumper"),
+                                             ("<frameName></frameName>", "")])
+def test_the_header_frame_gets_the_tf_prefix(world, bus, frame, expected):
+    """gazebo_plugins/src/gazebo_ros_bumper.cpp:95-99 (default world), :113-116: the frame
+    is tf::resolve(tf_prefix, frameName): world with prefix r1 is r1/world, an empty tag
+    is the prefix and a slash (tf/src/tf.cpp:159-185). Before: world kept as written, an
+    empty tag read as world."""
+    world.spawn_urdf("bot", robot(frame=frame), (0, 0, 0.1), tf_prefix="r1")
+    run(world, 0.1)
+    assert bus.last("/plate_bumper").header.frame_id == f"r1/{expected}"
 
 
 def test_a_collision_the_model_lacks_leaves_the_sensor_out_naming_it(world, bus):

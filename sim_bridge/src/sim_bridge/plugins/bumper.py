@@ -5,13 +5,17 @@ From the sensor: ``<contact><collision>NAME</collision></contact>`` (one or more
 name of a collision (sdformat's: ``<link>_collision``, a lumped link's
 ``<parent>_fixed_joint_lump__<link>_collision``, a second one ``..._collision_1``), and
 ``<update_rate>`` (Hz of simulated time; every step when 0). From the plugin, with
-gazebo_ros_bumper's defaults: ``bumperTopicName`` (bumper_states), ``frameName`` (world:
-positions, normals and forces in the world; a link of the model: in that link's frame).
+gazebo_ros_bumper's defaults: ``bumperTopicName`` (bumper_states), ``frameName`` (world):
+the header's frame alone, through tf::resolve with the tf_prefix. As Noetic's (gazebo_ros_pkgs
+noetic-devel f9e1a46, gazebo_plugins/src/gazebo_ros_bumper.cpp:151), whose code to move the
+contacts into the named link is commented out (:155-208): positions, normals and wrenches
+are in the world's coordinates whatever it names.
 
 One ContactState per pair of touching links, every update (an empty list when nothing
 touches, as Gazebo publishes): the contact points, their normals (pointing at this
 collision), depths (penetration, m), each point's wrench on this collision (the normal
-force along the normal; pybullet's friction forces added) and their sum.
+force along the normal; pybullet's friction forces added; the torque about the world's
+origin) and their sum.
 Collision names are ``<model>::<link>::<collision>`` as Gazebo scopes them.
 """
 from __future__ import annotations
@@ -57,27 +61,17 @@ class Bumper(Plugin):
             self.collisions[robot.link_index[link]] = \
                 f"{context.model_name}::{holder}::{collision}"
         self.rate = Rate(_rate(sensor))
-        frame = self.param("frameName", "world") or "world"
-        self.frame_link = None if frame == "world" or frame not in robot.link_index else frame
-        if frame != "world" and self.frame_link is None:
-            self.unreadable("frameName", frame, "world or a link of the model", "world")
-            frame = "world"
-        self.frame_id = frame if frame == "world" else self.frame(frame)
+        # gazebo_plugins/src/gazebo_ros_bumper.cpp:95-101, :113-116: any name, world by
+        # default, through tf::resolve; the header's only (:151): nothing is looked up
+        self.frame_id = self.frame(self.param("frameName", "world"))
         self.output = context.bus.publisher(
             self.topic(self.param("bumperTopicName", "bumper_states")), ContactsState,
             queue_size=1)
 
-    def _to_frame(self) -> Tuple[np.ndarray, np.ndarray]:
-        """(rotation, origin) taking world vectors and points into the output frame."""
-        if self.frame_link is None:
-            return np.eye(3), np.zeros(3)
-        position, orientation = self.context.robot.link_pose(self.frame_link)
-        rotation = np.array(pb.getMatrixFromQuaternion(orientation)).reshape(3, 3)
-        return rotation.T, np.asarray(position)
-
     def contacts(self) -> List[ContactState]:
+        """In the world's coordinates: gazebo_plugins/src/gazebo_ros_bumper.cpp:202-208 use
+        the identity as the frame (the link's pose is commented out, :193-201)."""
         client, body = self.context.client, self.context.robot.id
-        rotation, origin = self._to_frame()
         pairs: Dict[Tuple[int, int, int], ContactState] = {}
         for link, name in self.collisions.items():
             for point in pb.getContactPoints(bodyA=body, linkIndexA=link,
@@ -94,12 +88,11 @@ class Bumper(Plugin):
                 force = point[9] * normal + point[10] * np.asarray(point[11]) \
                     + point[12] * np.asarray(point[13])
                 world_point = np.asarray(point[5])
-                state.contact_positions.append(Vector3(*(rotation @ (world_point - origin))))
-                state.contact_normals.append(Vector3(*(rotation @ normal)))
+                state.contact_positions.append(Vector3(*world_point))
+                state.contact_normals.append(Vector3(*normal))
                 state.depths.append(max(0.0, -point[8]))
-                local = rotation @ force
-                torque = np.cross(rotation @ (world_point - origin), local)
-                state.wrenches.append(Wrench(force=Vector3(*local), torque=Vector3(*torque)))
+                torque = np.cross(world_point, force)
+                state.wrenches.append(Wrench(force=Vector3(*force), torque=Vector3(*torque)))
         for state in pairs.values():
             state.total_wrench.force = Vector3(*np.sum([[w.force.x, w.force.y, w.force.z]
                                                         for w in state.wrenches], axis=0))
