@@ -9,7 +9,11 @@ defaults, odd as they are; write both.
 Rays are cast in the sensor's frame from the link's true pose, rotation included, from
 ``range min`` to ``range max`` (as Gazebo's rays start at the minimum range). A ray that
 hits nothing reads ``+inf`` (REP 117), not Gazebo's max range; the sensor is always on;
-stamps are simulated time.
+stamps are simulated time. As Noetic's plugins fill the message (gazebo_ros_pkgs noetic-devel
+f9e1a46, gazebo_plugins/src/gazebo_ros_laser.cpp:188-205, gazebo_ros_gpu_laser.cpp:193-210):
+time_increment and scan_time 0; the intensities the sensor's, one per range, which Gazebo's
+ray sensor gives the ``<laser_retro>`` of what each ray hits, 0 without one or without a
+hit: all 0 here (``<laserRetro>`` is not emulated).
 
 A sensor of more than :data:`MAX_BEAMS` beams (horizontal × vertical samples) is not
 loaded: as with any plugin that cannot run as written, the robot spawns without it and a
@@ -85,6 +89,8 @@ class Laser(SensorPlugin):
             raise PluginError(f"sensor '{name}': only gaussian noise is modelled")
         update_rate = _number(element, "update_rate", 0.0, name)
         self.rate = Rate(update_rate)
+        # the time between scans (tools/bench reads it); not the message's scan_time,
+        # which Noetic's plugins leave 0 (gazebo_plugins/src/gazebo_ros_laser.cpp:195)
         self.scan_time = 1.0 / update_rate if update_rate > 0 else context.step_size
         angles = (np.linspace(self.angle_min, self.angle_max, samples) if samples > 1
                   else np.array([self.angle_min]))
@@ -120,10 +126,17 @@ class Laser(SensorPlugin):
         message.angle_min = self.angle_min
         message.angle_max = self.angle_max
         message.angle_increment = self.increment
-        message.scan_time = self.scan_time
+        # gazebo_plugins/src/gazebo_ros_laser.cpp:194-195 (gazebo_ros_gpu_laser.cpp:199-200):
+        # "instantaneous simulator scan", time_increment and scan_time 0
+        message.time_increment = 0.0
+        message.scan_time = 0.0
         message.range_min = self.range_min
         message.range_max = self.range_max
         message.ranges = self.measure().tolist()
+        # gazebo_plugins/src/gazebo_ros_laser.cpp:202-205 (gazebo_ros_gpu_laser.cpp:207-210):
+        # the sensor's intensities, one per range: each ray's <laser_retro>, 0 without one
+        # or without a hit (not emulated: all 0)
+        message.intensities = [0.0] * len(message.ranges)
         self.output.publish(message)
 
     def reset(self, now_ns: int) -> None:
