@@ -27,8 +27,11 @@ def test_a_plugin_naming_joints_the_model_lacks_is_skipped_and_the_rest_runs(wor
     (warning,) = [w for w in bus.warnings if "not loaded" in w]
     assert "plugin 'drive'" in warning and "front_left_wheel_joint, rear_left_wheel_joint" \
         in warning and "spawned without it" in warning
-    # what the skipped plugin opened is closed; the other plugin publishes
-    assert "/odom" in bus.closed and "/cmd_vel" in bus.closed
+    # what the skipped plugin opened is closed (its odometry topic is never opened: Noetic's
+    # reads the joints before it advertises, gazebo_plugins/src/gazebo_ros_diff_drive.cpp:111
+    # and :169); the other plugin publishes
+    assert "/cmd_vel" in bus.closed
+    assert set(bus.advertised) - set(bus.closed) == {"/ground_truth"}
     run(world, 0.1)
     assert bus.published["/ground_truth"]
 
