@@ -39,9 +39,11 @@ TIERS = ("unit", "description", "rostest", "e2e", "fuzz")
 ROSTEST_TIMEOUT = 600
 # rostest's own limit for a <test> without time-limit, s
 ROSTEST_DEFAULT_LIMIT = 60.0
-# rostest files run at once: each has its own master on a free port and its own ROS_HOME;
-# two keep the 2-core CI machine busy while one waits on start-up or a paced simulation
-ROSTEST_JOBS = 2
+# rostest files run at once: each has its own master on a free port and its own ROS_HOME.
+# With two, the 2-core machine sat 40-50% idle through the tier (vmstat on a fresh clone:
+# a file waits on roslaunch's start-up and on simulations paced at real time); three fill
+# it (ROSTEST_ALONE's timing-bound files still run alone)
+ROSTEST_JOBS = 3
 # Files that run with nothing beside them: a controller closes its loop on a simulation
 # paced faster than real time, so a node starved of CPU for a moment costs it simulated
 # time. rotate.test (5x) failed beside another file once (-180 degrees overshot to -180.4,

@@ -6,7 +6,7 @@
 #   3. makes .venv from the system interpreter and installs tools/requirements.txt
 #      (again only when that file changed);
 #   4. builds the catkin workspace in .ws/ (the repository is linked as .ws/src/<repo>,
-#      the classic ~/catkin_ws/src/<repo> layout) with the system interpreter;
+#      the classic ~/catkin_ws/src/<repo> layout) with the system interpreter, and beside it
 #   5. builds the platform alone (sim_bridge, urdf_tools, node_params, compat/, courses/,
 #      course_grader; no course solution) into .ws/platform/, its own build and devel
 #      spaces: what course_grader overlays a student's submission on.
@@ -97,28 +97,19 @@ fi
 # workspace's (compat/xacro, rospkg's $(find)) takes its place on PATH.
 ln -sfn "$repo/compat/xacro/xacro" "$venv/bin/xacro"
 
-# --- 4. the catkin build --------------------------------------------------------------
+# --- 4. and 5. the two catkin builds, side by side ---------------------------------------
+# 4: the whole workspace in .ws/ (the repository linked as .ws/src/<repo>, the classic
+# ~/catkin_ws/src/<repo> layout). 5: the platform alone in .ws/platform/: its own source
+# space, .ws/platform/src, holding links to the platform's packages only (catkin's devel
+# space puts its source space on ROS_PACKAGE_PATH: with the whole repository there,
+# `rospack find my_rb1_ros` would still find ours), and its own build and devel spaces; a
+# platform package that depends on a course solution fails there. Each build's CMake
+# configure runs on one core for half a minute: started together they share the two
+# (80 s one after the other, measured on a fresh clone).
 ws="$repo/.ws"
 mkdir -p "$ws/src"
 link="$ws/src/$(basename "$repo")"
 [ -L "$link" ] || ln -s ../.. "$link"
-# The system interpreter first, whatever pyenv or conda put on PATH.
-export PATH="/usr/bin:/bin:$PATH"
-log="$ws/catkin_make.log"
-if (cd "$ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON \
-      >"$log" 2>&1); then
-  echo "setup: catkin build: ok ($(ls -d "$repo"/*/package.xml "$repo"/compat/*/package.xml "$repo"/courses/*/package.xml | wc -l) packages; log $log)"
-else
-  tail -n 40 "$log" >&2
-  echo "setup: catkin build failed; the whole log is $log" >&2
-  exit 1
-fi
-
-# --- 5. the platform alone ------------------------------------------------------------
-# Its own source space, .ws/platform/src, holding links to the platform's packages only
-# (catkin's devel space puts its source space on ROS_PACKAGE_PATH: with the whole
-# repository there, `rospack find my_rb1_ros` would still find ours), and its own build and
-# devel spaces. A platform package that depends on a course solution fails here.
 platform_ws="$ws/platform"
 mkdir -p "$platform_ws/src"
 platform_links=(sim_bridge urdf_tools node_params course_grader compat courses)
@@ -130,9 +121,26 @@ for name in "${platform_links[@]}"; do
   fi
 done
 platform_count=$(find -L "$platform_ws/src" -name package.xml -not -path '*/test/*' | wc -l)
+# The system interpreter first, whatever pyenv or conda put on PATH.
+export PATH="/usr/bin:/bin:$PATH"
+log="$ws/catkin_make.log"
 platform_log="$platform_ws/catkin_make.log"
-if (cd "$platform_ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 \
-      -DCATKIN_ENABLE_TESTING=OFF >"$platform_log" 2>&1); then
+(cd "$ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON \
+   >"$log" 2>&1) &
+workspace_build=$!
+(cd "$platform_ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 \
+   -DCATKIN_ENABLE_TESTING=OFF >"$platform_log" 2>&1) &
+platform_build=$!
+workspace_ok=0; wait "$workspace_build" || workspace_ok=$?
+platform_ok=0; wait "$platform_build" || platform_ok=$?
+if [ "$workspace_ok" -eq 0 ]; then
+  echo "setup: catkin build: ok ($(ls -d "$repo"/*/package.xml "$repo"/compat/*/package.xml "$repo"/courses/*/package.xml | wc -l) packages; log $log)"
+else
+  tail -n 40 "$log" >&2
+  echo "setup: catkin build failed; the whole log is $log" >&2
+  exit 1
+fi
+if [ "$platform_ok" -eq 0 ]; then
   echo "setup: platform build: ok ($platform_count packages, no course solution; log $platform_log)"
 else
   tail -n 40 "$platform_log" >&2
