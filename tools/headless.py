@@ -74,6 +74,11 @@ def private_master(ros_home: Optional[str] = None) -> Iterator[Dict[str, str]]:
 
 
 XVFB_START_LOCK = "/tmp/.xvfb-start.lock"
+# -noreset: by default Xvfb resets itself when its last client leaves, and a client that
+# connects meanwhile is refused ("Can't open display"): an rviz started again after the
+# first one died, or a window opened just after the last one closed, met it (2 refusals in
+# 60 close-then-open pairs here; none with -noreset)
+XVFB_OPTIONS = ("-noreset",)
 
 
 @contextlib.contextmanager
@@ -90,8 +95,8 @@ def virtual_display(width: int = 1024, height: int = 768,
         fcntl.flock(lock, fcntl.LOCK_EX)
         server = subprocess.Popen(
             ["Xvfb", "-displayfd", str(write_end), "-screen", "0", f"{width}x{height}x24",
-             "-nolisten", "tcp"], pass_fds=(write_end,), stdout=subprocess.DEVNULL,
-            stderr=subprocess.DEVNULL)
+             "-nolisten", "tcp", *XVFB_OPTIONS], pass_fds=(write_end,),
+            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         os.close(write_end)
         with os.fdopen(read_end) as announced:
             number = wait_until(lambda: announced.readline().strip() or server.poll() is not None,

@@ -114,3 +114,19 @@ def test_launch_processes_are_the_launch_and_everything_under_it():
         stranger.kill()
         tree.wait()
         stranger.wait()
+
+
+def test_the_virtual_screen_does_not_reset_when_its_last_client_leaves():
+    """Xvfb resets itself when its last client leaves unless -noreset, and refuses a client
+    that connects meanwhile (a window opened just after the last one closed). A reset
+    clears the root window's properties: one set by a client that then left must stay."""
+    import subprocess
+    import time
+    with headless.virtual_display(64, 48) as display:
+        env = dict(os.environ, DISPLAY=display)
+        subprocess.run(["xprop", "-root", "-f", "SIM_BRIDGE_MARK", "8s", "-set",
+                        "SIM_BRIDGE_MARK", "kept"], env=env, check=True, timeout=20)
+        time.sleep(0.5)   # a reset, if any, follows the client's exit at once
+        read = subprocess.run(["xprop", "-root", "SIM_BRIDGE_MARK"], env=env,
+                              capture_output=True, text=True, check=True, timeout=20)
+    assert '"kept"' in read.stdout, read.stdout

@@ -179,7 +179,10 @@ class Session:
             fcntl.flock(lock, fcntl.LOCK_EX)
             with open(log_path, "w", encoding="utf-8") as log:
                 process = subprocess.Popen(["Xvfb", "-displayfd", str(write_fd), "-screen", "0",
-                                            "1280x1024x24", "-nolisten", "tcp"],
+                                            "1280x1024x24", "-nolisten", "tcp",
+                                            # a reset when the last client leaves refuses
+                                            # the next one (a node started again)
+                                            "-noreset"],
                                            stdout=log, stderr=subprocess.STDOUT,
                                            pass_fds=(write_fd,), start_new_session=True)
             os.close(write_fd)
