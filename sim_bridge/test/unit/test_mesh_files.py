@@ -331,21 +331,20 @@ def test_a_static_collada_model_stops_a_falling_body_and_is_seen_by_the_laser(
     assert above == pytest.approx(0.8, abs=0.005)
 
 
-def test_the_gui_saved_world_with_a_missing_cardboard_box_mesh_loads_with_one_warning(
-        world, caplog):
+def test_the_gui_saved_world_with_a_missing_mesh_loads_with_one_warning(world, caplog):
     with caplog.at_level(logging.WARNING, logger="rosout.sim_bridge"):
         spec = load_world(os.path.join(DATA, "missing_mesh.world"))  # the default: logged
     warnings = [r.getMessage() for r in caplog.records if r.name == "rosout.sim_bridge"]
     assert len(warnings) == 1
-    for words in ("model 'cardboard_box' link 'link' visual 'visual'",
-                  "mesh 'model://cardboard_box/meshes/cardboard_box.dae'", "is not found",
+    for words in ("model 'my_crate' link 'link' visual 'visual'",
+                  "mesh 'model://my_crate/meshes/my_crate.dae'", "is not found",
                   "the visual is left out", "the same for 1 more link"):
         assert words in warnings[0]
     world.load_world(spec)
-    boxes = [m for m in spec.models if m.name.startswith("cardboard_box")]
+    boxes = [m for m in spec.models if m.name.startswith("my_crate")]
     assert [len(m.links[0].visuals) for m in boxes] == [0, 0]
     run(world, 1.0)
-    assert body_height(world, "cardboard_box") == pytest.approx(0.15, abs=HEIGHT_TOLERANCE)
+    assert body_height(world, "my_crate") == pytest.approx(0.15, abs=HEIGHT_TOLERANCE)
 
 
 def sdf_block(collisions, visuals, static=False):
