@@ -100,7 +100,7 @@ class RosControl(Plugin):
             raise PluginError(f"plugin '{spec.name}' (libgazebo_ros_control.so): model "
                               f"'{context.model_name}' has no <transmission>, so no joint to "
                               "control")
-        self.hardware = RobotHardware(context, transmissions)
+        self.hardware = RobotHardware(context, transmissions, self.namespace)
         self.param("robotParam")  # the spawned model's own description is used
         self.flag("legacyModeNS", False)  # how upstream finds robotParam: no effect here
         sim_type = self.param("robotSimType", DEFAULT_SIM_TYPE)
@@ -215,7 +215,7 @@ class RosControl(Plugin):
         for loaded in self.controllers.values():
             if loaded.state == "running":
                 loaded.controller.update(now_ns, self.period)
-        self.hardware.write()
+        self.hardware.write(self.period)
 
     def reset(self, now_ns: int) -> None:
         """After a reset or new joint positions: hold there, controllers start over."""

@@ -1,28 +1,54 @@
 """The robot as ros_control's controllers see it: the joints that have a transmission, each
 with the interface its transmission names (position, velocity or effort).
 
-As gazebo_ros_control's DefaultRobotHWSim: before a controller commands them, position
-joints hold where they were when the robot was spawned, velocity joints hold still, effort
-joints are free. Commands reach pybullet once per control period: position through its
-position motor and velocity through its velocity motor (both limited to the joint's
-URDF effort), effort as a joint torque.
+As gazebo_ros_control's DefaultRobotHWSim (gazebo_ros_pkgs noetic-devel f9e1a46,
+gazebo_ros_control/src/default_robot_hw_sim.cpp; "hw_sim" below), with its joint limits
+(ros_control noetic-devel 633c374, joint_limits_interface; "JLI" below):
+
+- limits: registerJointLimits (hw_sim:393-510) reads the URDF ``<limit>`` (JLI
+  joint_limits_urdf.h:48-76: position limits for revolute and prismatic joints, the velocity
+  and effort limits always) and then ``<robotNamespace>/joint_limits/<joint>`` on the
+  parameter server (JLI joint_limits_rosparam.h:75-169, hw_sim:69, :425-426). A joint with
+  neither gets no limit at all: its effort limit is DBL_MAX (hw_sim:404, :428-429);
+  ``effort="0"`` is a limit of 0 (hw_sim:453-454).
+- every command passes the saturation handle of its interface before it reaches the joint
+  (hw_sim:302-307, :485-508): a velocity command is clamped to ±``velocity``
+  (VelocityJointSaturationHandle, JLI joint_limits_interface.h:425-455); a position command
+  to [lower, upper] and, from the previous command, by at most ``velocity``·dt a write
+  (PositionJointSaturationHandle, :91-112); an effort command to ±``effort``, and to 0 in
+  the direction that would push the joint further past a position limit or past its
+  velocity limit (EffortJointSaturationHandle, :285-306).
+- position joints move to their command whatever their effort limit: Gazebo sets their
+  position (hw_sim:320-326, ``SetPosition``, kinematic); here pybullet's position motor with
+  no force limit follows it. Velocity joints: the velocity motor with the effort limit as
+  its most force (hw_sim:240, :363); 0 leaves the joint free, as ODE's ``fmax`` 0 does.
+  Effort joints: the (saturated) command as a joint torque (hw_sim:313-318).
+- before a controller commands them, position joints hold where they were spawned (or set
+  by ``set_model_configuration``), velocity joints hold still, effort joints are free.
+
+Not read: ``<safety_controller>`` soft limits (hw_sim:420-421, :456-482), the
+``gazebo_ros_control/pid_gains`` (hw_sim:216-245), ``eStopTopic``.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
-from typing import Dict, List
+from typing import Any, Dict, List, Mapping, Optional
 
 import numpy as np
 import pybullet as pb
 
-from sim_bridge.plugins.base import PluginError
+from sim_bridge.plugins.base import PluginError, resolve_topic
 
 INTERFACES = {
     "PositionJointInterface": "position",
     "VelocityJointInterface": "velocity",
     "EffortJointInterface": "effort",
 }
-# a joint whose URDF gives no effort limit gets this much (N m or N)
+# DefaultRobotHWSim's effort limit for a joint with no limit at all: DBL_MAX (hw_sim:404)
+UNLIMITED = math.inf
+# the mimic joint plugin's fallback force (plugins/mimic_joint.py imports it); ros_control's
+# joints do not use it
 DEFAULT_EFFORT = 1000.0
 
 
@@ -35,19 +61,150 @@ def interface_of(name: str) -> str:
 
 
 @dataclass
+class JointLimits:
+    """joint_limits_interface::JointLimits (JLI joint_limits.h:36-51)."""
+
+    min_position: float = 0.0
+    max_position: float = 0.0
+    max_velocity: float = 0.0
+    max_acceleration: float = 0.0
+    max_jerk: float = 0.0
+    max_effort: float = 0.0
+    has_position_limits: bool = False
+    has_velocity_limits: bool = False
+    has_acceleration_limits: bool = False
+    has_jerk_limits: bool = False
+    has_effort_limits: bool = False
+    angle_wraparound: bool = False
+
+
+def urdf_limits(joint, limits: JointLimits) -> bool:
+    """getJointLimits(urdf_joint, limits) (JLI joint_limits_urdf.h:48-76): False when the
+    joint has no ``<limit>``."""
+    if joint.limit is None:
+        return False
+    limits.has_position_limits = joint.type in ("revolute", "prismatic")
+    if limits.has_position_limits:
+        limits.min_position, limits.max_position = joint.limit.lower, joint.limit.upper
+    if not limits.has_position_limits and joint.type == "continuous":
+        limits.angle_wraparound = True
+    limits.has_velocity_limits, limits.max_velocity = True, joint.limit.velocity
+    limits.has_acceleration_limits = False
+    limits.has_effort_limits, limits.max_effort = True, joint.limit.effort
+    return True
+
+
+def _is_number(value) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def rosparam_limits(params: Any, limits: JointLimits) -> bool:
+    """getJointLimits(joint_name, nh, limits) (JLI joint_limits_rosparam.h:75-169) on the
+    dict under ``joint_limits/<joint>``: False when there is none. A ``has_*`` that is not a
+    bool, or a value that is not a number, is not read (roscpp's getParam fails on them)."""
+    if params is None:
+        return False
+    if not isinstance(params, Mapping):
+        return True  # the parameter exists (hasParam): nothing in it is read
+
+    def flag(key):
+        value = params.get(key)
+        return value if isinstance(value, bool) else None
+
+    def number(key):
+        value = params.get(key)
+        return float(value) if _is_number(value) else None
+
+    has = flag("has_position_limits")
+    if has is not None:  # :97-114
+        if not has:
+            limits.has_position_limits = False
+        low, high = number("min_position"), number("max_position")
+        if has and low is not None and high is not None:
+            limits.has_position_limits, limits.min_position, limits.max_position = True, low, high
+        wrap = flag("angle_wraparound")
+        if not has and wrap is not None:
+            limits.angle_wraparound = wrap
+    for kind, key in (("velocity", "max_velocity"), ("acceleration", "max_acceleration"),
+                      ("jerk", "max_jerk"), ("effort", "max_effort")):  # :116-166
+        has = flag(f"has_{kind}_limits")
+        if has is None:
+            continue
+        if not has:
+            setattr(limits, f"has_{kind}_limits", False)
+        value = number(key)
+        if has and value is not None:
+            setattr(limits, f"has_{kind}_limits", True)
+            setattr(limits, key, value)
+    return True
+
+
+def _saturate(value: float, low: float, high: float) -> float:
+    """internal::saturate (JLI joint_limits_interface.h:53-57): min(max(v, low), high)."""
+    return min(max(value, low), high)
+
+
+@dataclass
 class JointHandle:
     name: str
     index: int
     interface: str
+    joint_type: str  # the URDF's: revolute, continuous, prismatic
+    # DefaultRobotHWSim's joint_effort_limits_: the limit's max_effort, else DBL_MAX
     effort_limit: float
+    # the limits of its saturation handle; None: no handle (a joint with no limits)
+    limits: Optional[JointLimits] = None
     command: float = 0.0
+    # the handles' prev_cmd_: position (NaN until the first write), velocity (0.0)
+    previous: float = math.nan
+
+    def saturate(self, position: float, velocity: float, period: float) -> None:
+        """The saturation handle's enforceLimits on ``command`` (hw_sim:302-307)."""
+        limits = self.limits
+        if limits is None:
+            return
+        if self.interface == "position":  # PositionJointSaturationHandle (JLI :91-112)
+            if math.isnan(self.previous):
+                self.previous = position
+            low, high = ((limits.min_position, limits.max_position)
+                         if limits.has_position_limits else (-math.inf, math.inf))
+            if limits.has_velocity_limits:
+                step = limits.max_velocity * period
+                low, high = max(self.previous - step, low), min(self.previous + step, high)
+            self.command = _saturate(self.command, low, high)
+            self.previous = self.command
+        elif self.interface == "velocity":  # VelocityJointSaturationHandle (JLI :425-455)
+            low, high = -limits.max_velocity, limits.max_velocity
+            if limits.has_acceleration_limits:
+                step = limits.max_acceleration * period
+                low, high = max(self.previous - step, low), min(self.previous + step, high)
+            self.command = _saturate(self.command, low, high)
+            self.previous = self.command
+        else:  # EffortJointSaturationHandle (JLI :285-306)
+            low, high = -limits.max_effort, limits.max_effort
+            if limits.has_position_limits:
+                if position < limits.min_position:
+                    low = 0.0
+                elif position > limits.max_position:
+                    high = 0.0
+            if velocity < -limits.max_velocity:
+                low = 0.0
+            elif velocity > limits.max_velocity:
+                high = 0.0
+            self.command = _saturate(self.command, low, high)
+
+    def reset_saturation(self) -> None:
+        """PositionJointSaturationHandle::reset (JLI :117-119): the next write starts from
+        where the joint is. Velocity: from standing still."""
+        self.previous = math.nan if self.interface == "position" else 0.0
 
 
 class RobotHardware:
-    def __init__(self, context, transmissions):
+    def __init__(self, context, transmissions, namespace: str = ""):
         robot = context.robot
         self.client = context.client
         self.body = robot.id
+        self.step_size = context.step_size
         self.joints: Dict[str, JointHandle] = {}
         for transmission in transmissions:
             if not transmission.hardware_interfaces:
@@ -58,10 +215,12 @@ class RobotHardware:
                 if joint not in robot.joint_index:
                     raise PluginError(f"transmission '{transmission.name}' names joint "
                                       f"'{joint}', which model '{context.model_name}' does not have")
-                limit = robot.model.joints[joint].limit
-                effort = limit.effort if limit is not None and limit.effort > 0 else DEFAULT_EFFORT
+                description = robot.model.joints[joint]
+                limits = self._limits(context.bus, namespace, description, interface)
+                effort = (limits.max_effort if limits is not None and limits.has_effort_limits
+                          else UNLIMITED)  # hw_sim:404, :453-454
                 self.joints[joint] = JointHandle(joint, robot.joint_index[joint], interface,
-                                                 effort)
+                                                 description.type, effort, limits)
         self.names: List[str] = list(self.joints)
         self._indices = [self.joints[n].index for n in self.names]
         self.positions = np.zeros(len(self.names))
@@ -69,13 +228,39 @@ class RobotHardware:
         self.efforts = np.zeros(len(self.names))
         self.hold()
 
+    @staticmethod
+    def _limits(bus, namespace: str, joint, interface: str) -> Optional[JointLimits]:
+        """registerJointLimits (hw_sim:393-510): the URDF's limits, then the parameter
+        server's ``joint_limits/<joint>`` in the robot's namespace; None when neither."""
+        limits = JointLimits()
+        has_limits = urdf_limits(joint, limits)  # hw_sim:411-423
+        name = f"joint_limits/{joint.name}"
+        params = bus.get_param(resolve_topic(namespace, name), None)
+        if params is None:  # a parameter tree given whole (the RecordingBus keeps it so)
+            tree = bus.get_param(resolve_topic(namespace, "joint_limits"), None)
+            params = tree.get(joint.name) if isinstance(tree, Mapping) else None
+        if rosparam_limits(params, limits):  # hw_sim:425-426
+            has_limits = True
+        if not has_limits:  # hw_sim:428-429
+            return None
+        # the handles' constructors throw without these (JLI :172-176, :267-276, :411-415):
+        # Gazebo's plugin does not load the robot's controls
+        if interface in ("velocity", "effort") and not limits.has_velocity_limits:
+            raise PluginError(f"Cannot enforce limits for joint '{joint.name}'. It has no "
+                              "velocity limits specification.")
+        if interface == "effort" and not limits.has_effort_limits:
+            raise PluginError(f"Cannot enforce limits for joint '{joint.name}'. It has no "
+                              "efforts limits specification.")
+        return limits
+
     def hold(self) -> None:
-        """DefaultRobotHWSim's resting commands: position joints where they are, velocity
-        joints still, effort joints free."""
+        """The resting commands: position joints where they are, velocity joints still,
+        effort joints free."""
         self.read()
         for position, handle in zip(self.positions, self.joints.values()):
             handle.command = float(position) if handle.interface == "position" else 0.0
-        self.write()
+            handle.reset_saturation()
+        self.write(self.step_size)
 
     def read(self) -> None:
         states = pb.getJointStates(self.body, self._indices, physicsClientId=self.client)
@@ -87,24 +272,26 @@ class RobotHardware:
         i = self.names.index(joint)
         return self.positions[i], self.velocities[i], self.efforts[i]
 
-    def write(self) -> None:
+    def write(self, period: Optional[float] = None) -> None:
+        """writeSim (hw_sim:285-383): the limits, then the commands to pybullet."""
+        period = self.step_size if period is None else period
         by_mode: Dict[str, List[JointHandle]] = {}
-        for handle in self.joints.values():
+        for k, handle in enumerate(self.joints.values()):
+            handle.saturate(float(self.positions[k]), float(self.velocities[k]), period)
             by_mode.setdefault(handle.interface, []).append(handle)
         for interface, handles in by_mode.items():
             indices = [h.index for h in handles]
-            if interface == "position":
+            if interface == "position":  # SetPosition: no force limit (hw_sim:320-326)
                 pb.setJointMotorControlArray(
                     self.body, indices, pb.POSITION_CONTROL,
                     targetPositions=[h.command for h in handles],
-                    forces=[h.effort_limit for h in handles], physicsClientId=self.client)
-            elif interface == "velocity":
+                    forces=[UNLIMITED] * len(handles), physicsClientId=self.client)
+            elif interface == "velocity":  # fmax = the effort limit (hw_sim:240, :363)
                 pb.setJointMotorControlArray(
                     self.body, indices, pb.VELOCITY_CONTROL,
                     targetVelocities=[h.command for h in handles],
                     forces=[h.effort_limit for h in handles], physicsClientId=self.client)
-            else:
+            else:  # SetForce (hw_sim:313-318)
                 pb.setJointMotorControlArray(
                     self.body, indices, pb.TORQUE_CONTROL,
-                    forces=[float(np.clip(h.command, -h.effort_limit, h.effort_limit))
-                            for h in handles], physicsClientId=self.client)
+                    forces=[h.command for h in handles], physicsClientId=self.client)

@@ -1,0 +1,185 @@
+"""DefaultRobotHWSim's joint limits, on pybullet.DIRECT: what a command does to the joint
+as the URDF's <limit> and the joint_limits parameters allow it, checked on the joint's true
+velocity and position.
+
+Upstream: gazebo_ros_pkgs noetic-devel f9e1a46 gazebo_ros_control/src/default_robot_hw_sim.cpp
+("hw_sim"); ros_control noetic-devel 633c374 joint_limits_interface ("JLI")."""
+import pytest
+from controller_manager_msgs.srv import LoadControllerRequest, SwitchControllerRequest
+from std_msgs.msg import Float64
+
+from recording_bus import RecordingBus
+from sim_bridge.world import World
+from world_fixtures import run
+
+MANAGER = "/spinner/controller_manager"
+CONTROLLERS = {
+    "velocity": ("velocity_controllers/JointVelocityController", "VelocityJointInterface"),
+    "position": ("position_controllers/JointPositionController", "PositionJointInterface"),
+    "effort": ("effort_controllers/JointEffortController", "EffortJointInterface"),
+}
+
+
+def spinner_urdf(interface, joint_type="continuous", limit='<limit effort="50" velocity="2.0"/>',
+                 izz=0.1):
+    """A rotor on a vertical axis (gravity does not turn it) on a base fixed to the world."""
+    return f"""<?xml version="1.0"?>
+<robot name="spinner">
+  <link name="world"/>
+  <joint name="fixed" type="fixed"><parent link="world"/><child link="base_link"/></joint>
+  <link name="base_link">
+    <collision><geometry><box size="0.2 0.2 0.1"/></geometry></collision>
+    <inertial><mass value="2"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+  </link>
+  <link name="rotor">
+    <inertial><mass value="1"/><inertia ixx="{0.6 * izz}" ixy="0" ixz="0" iyy="{0.6 * izz}" iyz="0" izz="{izz}"/></inertial>
+  </link>
+  <joint name="spin" type="{joint_type}">
+    <parent link="base_link"/><child link="rotor"/><origin xyz="0 0 0.2"/><axis xyz="0 0 1"/>
+    {limit}
+  </joint>
+  <transmission name="spin_transmission">
+    <type>transmission_interface/SimpleTransmission</type>
+    <joint name="spin"><hardwareInterface>hardware_interface/{CONTROLLERS[interface][1]}</hardwareInterface></joint>
+    <actuator name="spin_motor"><mechanicalReduction>1</mechanicalReduction></actuator>
+  </transmission>
+  <gazebo>
+    <plugin name="gazebo_ros_control" filename="libgazebo_ros_control.so">
+      <robotNamespace>/spinner</robotNamespace>
+    </plugin>
+  </gazebo>
+</robot>"""
+
+
+def spinner(interface, params=None, **urdf):
+    """The world, the bus and the model, its controller for ``interface`` running."""
+    bus = RecordingBus({"/spinner/controller": {"type": CONTROLLERS[interface][0], "joint": "spin"},
+                        **(params or {})})
+    world = World(bus, ray_threads=1)
+    model = world.spawn_urdf("spinner", spinner_urdf(interface, **urdf))
+    assert bus.services[f"{MANAGER}/load_controller"](LoadControllerRequest("controller")).ok, \
+        bus.warnings
+    assert bus.services[f"{MANAGER}/switch_controller"](
+        SwitchControllerRequest(start_controllers=["controller"], strictness=2)).ok
+    return world, bus, model
+
+
+def command(bus, value):
+    bus.subscriptions["/spinner/controller/command"](Float64(value))
+
+
+def spin(model):
+    """The joint's true (position, velocity), from pybullet."""
+    return model.robot.joint_position_velocity("spin")
+
+
+def test_a_velocity_command_is_clamped_to_the_urdf_velocity_limit():
+    """VelocityJointSaturationHandle: ±<limit velocity> (JLI joint_limits_interface.h:425-455;
+    registered from the URDF, hw_sim:418, :501-506; enforced every write, hw_sim:306)."""
+    world, bus, model = spinner("velocity")
+    command(bus, 10.0)
+    run(world, 0.5)
+    assert spin(model)[1] == pytest.approx(2.0, abs=0.02)  # was 10
+    command(bus, -10.0)
+    run(world, 0.5)
+    assert spin(model)[1] == pytest.approx(-2.0, abs=0.02)
+    world.close()
+
+
+def test_a_joint_without_a_limit_has_no_effort_limit():
+    """No <limit>: no limits registered and the effort limit is DBL_MAX (hw_sim:404,
+    :428-429), which the velocity motor gets as its fmax (hw_sim:240): a heavy flywheel is at
+    its commanded speed at once (it took 1000 N m before, 0.5 rad/s² for this one)."""
+    world, bus, model = spinner("velocity", limit="", izz=2000.0)
+    command(bus, 10.0)
+    run(world, 0.05)
+    assert spin(model)[1] == pytest.approx(10.0, abs=0.01)
+    world.close()
+
+
+@pytest.mark.parametrize("interface", ["velocity", "effort"])
+def test_an_effort_limit_of_zero_leaves_the_joint_unmoved(interface):
+    """effort="0" is a limit of 0 (JLI joint_limits_urdf.h:72-73; hw_sim:453-454): the
+    velocity motor's fmax is 0 (hw_sim:240), an effort command is saturated to 0
+    (EffortJointSaturationHandle, JLI :285-306). It was 1000 N m before."""
+    world, bus, model = spinner(interface, limit='<limit effort="0" velocity="2.0"/>')
+    command(bus, 1.0)
+    run(world, 0.5)
+    assert spin(model) == pytest.approx((0.0, 0.0), abs=1e-6)
+    world.close()
+
+
+def test_a_position_joint_moves_whatever_its_effort_limit():
+    """Position joints are set kinematically (SetPosition, hw_sim:320-326): no effort limit
+    applies, effort="0" included."""
+    world, bus, model = spinner("position", joint_type="revolute",
+                                limit='<limit lower="-3" upper="3" effort="0" velocity="2.0"/>')
+    command(bus, 0.5)
+    run(world, 1.0)
+    assert spin(model)[0] == pytest.approx(0.5, abs=1e-3)
+    world.close()
+
+
+def test_a_position_command_moves_at_most_at_the_urdf_velocity():
+    """PositionJointSaturationHandle: each write the command moves at most <limit velocity>·dt
+    from the previous one, and stays within [lower, upper] (JLI joint_limits_interface.h:91-112;
+    hw_sim:304, :494-499). A jump to 1 rad at 0.5 rad/s takes 2 s; 5 rad stops at upper 1.2."""
+    world, bus, model = spinner("position", joint_type="revolute",
+                                limit='<limit lower="-1.2" upper="1.2" effort="50" velocity="0.5"/>')
+    command(bus, 1.0)
+    run(world, 1.0)
+    position, velocity = spin(model)
+    assert position == pytest.approx(0.5, abs=0.02)  # was 1.0
+    assert velocity == pytest.approx(0.5, abs=0.02)
+    run(world, 1.5)
+    assert spin(model)[0] == pytest.approx(1.0, abs=1e-3)
+    command(bus, 5.0)
+    run(world, 1.0)
+    assert spin(model)[0] == pytest.approx(1.2, abs=1e-3)
+    world.close()
+
+
+def test_an_effort_joint_is_not_pushed_past_its_velocity_limit():
+    """EffortJointSaturationHandle: above <limit velocity> the effort that would speed the
+    joint up further is 0 (JLI joint_limits_interface.h:299-303); the rest of the time it is
+    clamped to ±<limit effort> (:287-288). 5 N m on 0.1 kg m² is 50 rad/s²: 2 rad/s, then it
+    coasts (it reached 25 rad/s before)."""
+    world, bus, model = spinner("effort", limit='<limit effort="5" velocity="2.0"/>')
+    command(bus, 100.0)  # saturated to 5 N m
+    run(world, 0.02)
+    assert spin(model)[1] == pytest.approx(1.0, abs=0.06)
+    run(world, 0.5)
+    assert 2.0 <= spin(model)[1] <= 2.06
+    world.close()
+
+
+def test_joint_limits_parameters_override_the_urdf():
+    """<robotNamespace>/joint_limits/<joint> (JLI joint_limits_rosparam.h:75-169, read from
+    the robot's namespace, hw_sim:69, :425-426) replaces the URDF's velocity limit and adds an
+    acceleration limit (VelocityJointSaturationHandle, JLI :433-440): 4 rad/s² up to 1 rad/s."""
+    limits = {"/spinner/joint_limits": {"spin": {
+        "has_velocity_limits": True, "max_velocity": 1.0,
+        "has_acceleration_limits": True, "max_acceleration": 4.0}}}
+    world, bus, model = spinner("velocity", params=limits)
+    command(bus, 10.0)
+    run(world, 0.1)
+    assert spin(model)[1] == pytest.approx(0.4, abs=0.01)
+    run(world, 0.4)
+    assert spin(model)[1] == pytest.approx(1.0, abs=0.01)
+    world.close()
+
+
+def test_limits_without_a_velocity_limit_refuse_the_controls_naming_the_joint():
+    """A velocity or effort joint with limits but no velocity limit: the saturation handle
+    throws "Cannot enforce limits for joint 'spin'. It has no velocity limits specification."
+    (JLI joint_limits_interface.h:411-415) and the plugin does not load; the model does."""
+    limits = {"/spinner/joint_limits/spin": {"has_effort_limits": True, "max_effort": 3.0}}
+    bus = RecordingBus({"/spinner/controller": {
+        "type": CONTROLLERS["velocity"][0], "joint": "spin"}, **limits})
+    world = World(bus, ray_threads=1)
+    world.spawn_urdf("spinner", spinner_urdf("velocity", limit=""))
+    assert f"{MANAGER}/load_controller" not in bus.services
+    assert any("Cannot enforce limits for joint 'spin'. It has no velocity limits "
+               "specification." in w for w in bus.warnings), bus.warnings
+    assert "spinner" in world.models
+    world.close()
