@@ -57,13 +57,16 @@ class GoalHandle:
         self.feedback.append(feedback)
 
 
-def arm(interface="PositionJointInterface"):
+def arm(interface="PositionJointInterface", params=None, joints=None):
+    """arm_bot with its controllers' parameters (and ``params``, by controller name), spawned
+    with ``joints`` positions."""
     with open(f"{DATA}/arm_bot_controllers.yaml", encoding="utf-8") as stream:
         configuration = yaml.safe_load(stream)
+    configuration.update(params or {})
     bus = RecordingBus({f"/arm_bot/{name}": value for name, value in configuration.items()})
     world = World(bus, ray_threads=1)
     model = world.spawn_urdf("arm_bot", expand(f"{DATA}/arm_bot.urdf.xacro",
-                                               {"arm_interface": interface}))
+                                               {"arm_interface": interface}), joints=joints)
     return world, bus, model
 
 
@@ -108,7 +111,88 @@ def test_trajectory_goal_reaches_its_positions_within_a_hundredth_of_a_radian():
     state = bus.last("/arm_bot/arm_controller/state")
     assert state.desired.positions == pytest.approx([1.0, 0.5])
     joint_states = bus.last("/arm_bot/joint_states")
-    assert joint_states.name == ["pan", "lift", "finger_joint"]  # the prismatic one too
+    assert set(joint_states.name) == {"pan", "lift", "finger_joint"}  # the prismatic one too
+    world.close()
+
+
+def load(bus, name):
+    return bus.services[f"{MANAGER}/load_controller"](LoadControllerRequest(name)).ok
+
+
+def test_joint_states_come_in_name_order_with_the_joints_true_state():
+    """Without ``joints``, joint_state_controller publishes hw->getNames(), the keys of a
+    std::map: sorted by name (ros_controllers noetic-devel 678b92a
+    joint_state_controller/src/joint_state_controller.cpp:56; ros_control noetic-devel 633c374
+    hardware_interface/include/hardware_interface/internal/resource_manager.h:77-86, :147).
+    arm_bot's transmissions come pan, lift, finger_joint."""
+    world, bus, model = arm(joints={"pan": 0.4, "lift": -0.3, "finger_joint": 0.01})
+    start(bus, "joint_state_controller")
+    run(world, 0.1)
+    message = bus.last("/arm_bot/joint_states")
+    assert message.name == ["finger_joint", "lift", "pan"]  # was pan, lift, finger_joint
+    truth = [model.robot.joint_position_velocity(j) for j in message.name]  # held: at rest
+    assert message.position == pytest.approx([p for p, _ in truth], abs=1e-6)
+    assert message.velocity == pytest.approx([v for _, v in truth], abs=1e-6)
+    assert message.position == pytest.approx([0.01, -0.3, 0.4], abs=1e-3)
+    world.close()
+
+
+def test_joint_state_controller_without_publish_rate_does_not_load():
+    """"Parameter 'publish_rate' not set" and init fails (joint_state_controller.cpp:64-67):
+    controller_manager does not load it (ros_control controller_manager.cpp:334-339). It was
+    50 Hz by default."""
+    world, bus, model = arm(params={"joint_state_controller": {
+        "type": "joint_state_controller/JointStateController"}})
+    assert not load(bus, "joint_state_controller")
+    assert any("Parameter 'publish_rate' not set" in w for w in bus.warnings), bus.warnings
+    world.close()
+
+
+def test_joint_state_controller_with_publish_rate_zero_loads_and_never_publishes():
+    """Publishing needs publish_rate > 0 (joint_state_controller.cpp:105); was: every step."""
+    world, bus, model = arm(params={"joint_state_controller": {
+        "type": "joint_state_controller/JointStateController", "publish_rate": 0}})
+    start(bus, "joint_state_controller")
+    run(world, 0.1)
+    assert "/arm_bot/joint_states" not in bus.published
+    world.close()
+
+
+def test_joints_and_extra_joints_shape_the_joint_states():
+    """``joints`` picks and orders the joints (joint_state_controller.cpp:52-57);
+    ``extra_joints`` appends joints with fixed values, each a double; others are named and
+    left out (:129-201): an int position (YAML's 1) is not a double."""
+    world, bus, model = arm(joints={"pan": 0.4}, params={"joint_state_controller": {
+        "type": "joint_state_controller/JointStateController", "publish_rate": 50,
+        "joints": ["pan", "lift"],
+        "extra_joints": [{"name": "wheel", "position": 1.5, "effort": -2.0},
+                         {"name": "bad", "position": 1},
+                         {"name": "pan", "position": 0.0},
+                         {"position": 1.0}]}})
+    start(bus, "joint_state_controller")
+    run(world, 0.1)
+    message = bus.last("/arm_bot/joint_states")
+    assert message.name == ["pan", "lift", "wheel"]
+    assert message.position == pytest.approx([
+        model.robot.joint_position_velocity("pan")[0],
+        model.robot.joint_position_velocity("lift")[0], 1.5], abs=1e-6)
+    assert message.position[0] == pytest.approx(0.4, abs=1e-3)
+    assert (message.velocity[2], message.effort[2]) == (0.0, -2.0)
+    for text in ("Extra joint 'bad' does not specify a valid default position. Ignoring.",
+                 "Joint state interface already contains specified extra joint 'pan'.",
+                 "Extra joint does not specify name. Ignoring."):
+        assert any(text in w for w in bus.warnings), (text, bus.warnings)
+    world.close()
+
+
+def test_joint_state_controller_naming_a_joint_without_transmission_does_not_load():
+    """getHandle throws for a name the JointStateInterface lacks (resource_manager.h:113-124):
+    the load fails (controller_manager.cpp:323-339)."""
+    world, bus, model = arm(params={"joint_state_controller": {
+        "type": "joint_state_controller/JointStateController", "publish_rate": 50,
+        "joints": ["pan", "elbow"]}})
+    assert not load(bus, "joint_state_controller")
+    assert any("elbow" in w for w in bus.warnings), bus.warnings
     world.close()
 
 
