@@ -383,3 +383,41 @@ def test_without_a_robot_namespace_the_controllers_live_under_the_models_name():
     assert "/px_arm/controller_manager/load_controller" in bus.services
     assert bus.services["/px_arm/controller_manager/load_controller"](
         LoadControllerRequest("arm_controller")).ok, bus.warnings
+
+
+def velocity_arm(velocity_ff=None):
+    """arm_bot's pan and lift on velocity interfaces, a velocity JointTrajectoryController
+    with a P gain of 5 (and ``velocity_ff``), pan on a 0.5 rad/s ramp to 1 rad in 2 s."""
+    controller = {"type": "velocity_controllers/JointTrajectoryController",
+                  "joints": ["pan", "lift"], "gains": {"pan": {"p": 5.0}, "lift": {"p": 5.0}}}
+    if velocity_ff is not None:
+        controller["velocity_ff"] = {"pan": velocity_ff, "lift": velocity_ff}
+    world, bus, model = arm("VelocityJointInterface", params={"vel_controller": controller})
+    start(bus, "vel_controller")
+    on_goal, _ = bus.actions["/arm_bot/vel_controller/follow_joint_trajectory"]
+    on_goal(GoalHandle(goal_to([1.0, 0.0], 2.0)))
+    run(world, 1.0)
+    return world, bus, model
+
+
+def test_velocity_trajectory_controller_has_no_feed_forward_by_default():
+    """velocity_ff/<joint> defaults to 0: command = velocity_ff·v_des + PID(e_pos, e_vel)
+    (ros_controllers noetic-devel 678b92a joint_trajectory_controller/include/
+    joint_trajectory_controller/hardware_interface_adapter.h:170-175, :210). A P loop alone
+    lags a 0.5 rad/s ramp by v/p = 0.1 rad; before, v_des was always fed forward and the
+    joint was on the ramp."""
+    world, bus, model = velocity_arm()
+    position, velocity = model.robot.joint_position_velocity("pan")
+    assert position == pytest.approx(0.5 - 0.1, abs=0.005)
+    assert velocity == pytest.approx(0.5, abs=0.01)
+    state = bus.last("/arm_bot/vel_controller/state")
+    assert state.error.positions[0] == pytest.approx(0.1, abs=0.005)
+    world.close()
+
+
+def test_velocity_trajectory_controller_feeds_forward_velocity_ff_times_the_velocity():
+    """velocity_ff 1: the desired velocity fed forward, the joint on the ramp (hia:210)."""
+    world, bus, model = velocity_arm(velocity_ff=1.0)
+    assert model.robot.joint_position_velocity("pan")[0] == pytest.approx(0.5, abs=0.005)
+    world.close()
+

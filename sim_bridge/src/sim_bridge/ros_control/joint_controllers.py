@@ -4,8 +4,11 @@
 - ``velocity_controllers/JointVelocityController``: its velocity;
 - ``effort_controllers/JointEffortController``: its effort;
 - ``effort_controllers/JointPositionController``: a position, reached through the PID
-  under ``pid`` (p, i, d, i_clamp);
-- ``effort_controllers/JointVelocityController``: a velocity, through the PID;
+  under ``pid`` (control_toolbox's, see :mod:`.pid`) on the position error, its derivative
+  from the error's difference: Pid::computeCommand(error, dt), as ros_controllers
+  noetic-devel 678b92a effort_controllers/src/joint_position_controller.cpp:214;
+- ``effort_controllers/JointVelocityController``: a velocity, through the PID the same way
+  (effort_controllers/src/joint_velocity_controller.cpp:140);
 - the group kin (``position_controllers/JointGroupPositionController``,
   ``velocity_controllers/JointGroupVelocityController``,
   ``effort_controllers/JointGroupEffortController``,
@@ -82,8 +85,9 @@ class EffortPositionController(SingleJointController):
         self.pid.reset()
 
     def update(self, now_ns, dt):
-        position, velocity, _ = self.hardware.state(self.handle.name)
-        self.handle.command = self.pid.command(self.target - position, -velocity, dt)
+        position, _, _ = self.hardware.state(self.handle.name)
+        # computeCommand(error, period) (joint_position_controller.cpp:214)
+        self.handle.command = self.pid.compute(self.target - position, dt)
 
 
 class EffortVelocityController(SingleJointController):
@@ -93,7 +97,6 @@ class EffortVelocityController(SingleJointController):
     def __init__(self, name, params, hardware, io):
         super().__init__(name, params, hardware, io)
         self.pid = Pid(self.params.get("pid", {}), f"controller '{name}'")
-        self._last_error = 0.0
 
     def start(self, now_ns):
         super().start(now_ns)
@@ -101,10 +104,8 @@ class EffortVelocityController(SingleJointController):
 
     def update(self, now_ns, dt):
         _, velocity, _ = self.hardware.state(self.handle.name)
-        error = self.target - velocity
-        rate = (error - self._last_error) / dt if dt > 0 else 0.0
-        self._last_error = error
-        self.handle.command = self.pid.command(error, rate, dt)
+        # computeCommand(error, period) (joint_velocity_controller.cpp:135-140)
+        self.handle.command = self.pid.compute(self.target - velocity, dt)
 
 
 class GroupController(Controller):
@@ -186,5 +187,6 @@ class GroupEffortPositionController(GroupController):
 
     def update(self, now_ns, dt):
         for handle, target, pid in zip(self.handles, self.targets, self.pids):
-            position, velocity, _ = self.hardware.state(handle.name)
-            handle.command = pid.command(target - position, -velocity, dt)
+            position, _, _ = self.hardware.state(handle.name)
+            # computeCommand(error, period) (joint_group_position_controller.cpp:171)
+            handle.command = pid.compute(target - position, dt)

@@ -2,8 +2,9 @@
 
 As ros_controllers' joint_trajectory_controller:
 
-- parameters: ``joints`` (required); ``gains/<joint>`` (p, i, d, i_clamp; effort and
-  velocity kinds); ``constraints``: ``goal_time`` (0), ``stopped_velocity_tolerance``
+- parameters: ``joints`` (required); ``gains/<joint>`` (p, i, d, i_clamp, antiwindup;
+  effort and velocity kinds, control_toolbox's PID, see :mod:`.pid`); ``velocity_ff/<joint>``
+  (0; effort and velocity kinds); ``constraints``: ``goal_time`` (0), ``stopped_velocity_tolerance``
   (0.01), ``<joint>/goal`` and ``<joint>/trajectory`` (0: not checked); ``state_publish_rate``
   (50 Hz), ``action_monitor_rate`` (20 Hz); ``allow_partial_joints_goal`` (false);
 - ``<name>/command`` (trajectory_msgs/JointTrajectory), ``<name>/follow_joint_trajectory``
@@ -16,8 +17,11 @@ As ros_controllers' joint_trajectory_controller:
 - an invalid trajectory (wrong joints, wrong lengths, NaN) is refused with
   INVALID_JOINTS or INVALID_GOAL and a message saying why; the controller keeps going.
 
-Output: position kind, the desired position; velocity kind, desired velocity plus a PID
-on the position error; effort kind, a PID on the position error.
+Output: position kind, the desired position; velocity and effort kinds,
+``velocity_ff``·(desired velocity) + PID(position error, velocity error) (ros_controllers
+noetic-devel 678b92a joint_trajectory_controller/include/joint_trajectory_controller/
+hardware_interface_adapter.h:170-175, :210; the PIDs reset when the controller starts,
+:180-190).
 """
 from __future__ import annotations
 
@@ -59,10 +63,17 @@ class JointTrajectoryController(Controller):
         self.default_path = np.array([float((constraints.get(j) or {}).get("trajectory", 0.0))
                                       for j in self.joints])
         self.pids: Optional[List[Pid]] = None
+        self.velocity_ff = np.zeros(len(self.joints))
         if self.interface in ("effort", "velocity"):
             gains = self.params.get("gains", {}) or {}
             self.pids = [Pid(gains.get(j, {}), f"controller '{name}' joint '{j}' "
                                                f"(parameter gains/{j})") for j in self.joints]
+            # controller_nh.param("velocity_ff/<joint>", ..., 0.0) (hia:170-175)
+            feed_forward = self.params.get("velocity_ff", {}) or {}
+            for k, joint in enumerate(self.joints):
+                value = feed_forward.get(joint, 0.0) if isinstance(feed_forward, dict) else 0.0
+                if isinstance(value, (int, float)) and not isinstance(value, bool):
+                    self.velocity_ff[k] = float(value)
         self.state_rate = Rate(self.number("state_publish_rate", 50.0))
         self.feedback_rate = Rate(self.number("action_monitor_rate", 20.0))
         bus = io.bus
@@ -178,13 +189,12 @@ class JointTrajectoryController(Controller):
     def _hold(self, now_ns: int) -> None:
         positions, _, _ = self._current()
         self.trajectory = Trajectory(Waypoint(now_ns / 1e9, positions), [])
-        if self.pids:
-            for pid in self.pids:
-                pid.reset()
 
     def start(self, now_ns):
         self.now_ns = now_ns
         self._hold(now_ns)
+        for pid in self.pids or []:  # hia:180-190
+            pid.reset()
         self.state_rate.reset(now_ns)
         self.feedback_rate.reset(now_ns)
 
@@ -217,11 +227,9 @@ class JointTrajectoryController(Controller):
             handle = self.hardware.joints[joint]
             if self.interface == "position":
                 handle.command = float(desired[k])
-            elif self.interface == "velocity":
-                handle.command = float(desired_velocity[k] +
+            else:  # hia:210
+                handle.command = float(self.velocity_ff[k] * desired_velocity[k] +
                                        self.pids[k].command(error[k], velocity_error[k], dt))
-            else:
-                handle.command = float(self.pids[k].command(error[k], velocity_error[k], dt))
 
     def _monitor(self, t, error, actual_velocity, desired, desired_velocity, actual):
         path = self.path_tolerance
