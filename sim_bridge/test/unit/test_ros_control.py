@@ -421,3 +421,186 @@ def test_velocity_trajectory_controller_feeds_forward_velocity_ff_times_the_velo
     assert model.robot.joint_position_velocity("pan")[0] == pytest.approx(0.5, abs=0.005)
     world.close()
 
+
+
+# --- JointTrajectoryController's goal handling ---------------------------------------------
+# ros_controllers noetic-devel 678b92a joint_trajectory_controller/include/
+# joint_trajectory_controller/: init_joint_trajectory.h ("init"), joint_trajectory_msg_utils.h
+# ("msg"), joint_trajectory_controller_impl.h ("impl").
+DROPPED_ALL = ("Dropping all {} trajectory point(s), as they occur before the current time.\n"
+               "Last point is {}s in the past.")
+
+
+def trajectory(*points, joints=("pan", "lift"), stamp_ns=0):
+    """A JointTrajectory of (seconds, positions) points."""
+    message = JointTrajectory(joint_names=list(joints), points=[
+        JointTrajectoryPoint(positions=list(p), time_from_start=genpy.Duration(t))
+        for t, p in points])
+    message.header.stamp = genpy.Time(0, 0) + genpy.Duration(0, stamp_ns) if stamp_ns else \
+        genpy.Time(0, 0)
+    return message
+
+
+def test_a_goal_whose_points_are_all_past_is_an_invalid_goal_with_noetics_message():
+    """Points at or before the next update are dropped; none left: "Dropping all N trajectory
+    point(s), …" (init:321-343) and the goal is rejected INVALID_GOAL with that string
+    (impl:538-546, :628-635); a single point at time_from_start 0 is such a goal. A stamp
+    5 s old: the same (its last point is 4 s in the past). Before: the single point was
+    accepted (the arm jumped) and an old stamp gave OLD_HEADER_TIMESTAMP, which no Noetic
+    code returns."""
+    world, bus, model = arm()
+    start(bus, "arm_controller")
+    run(world, 5.5)
+    on_goal, _ = bus.actions["/arm_bot/arm_controller/follow_joint_trajectory"]
+    now = GoalHandle(FollowJointTrajectoryGoal(trajectory=trajectory((0.0, [1.0, 0.5]))))
+    on_goal(now)
+    assert now.status == "rejected"
+    assert now.result.error_code == FollowJointTrajectoryResult.INVALID_GOAL
+    assert now.result.error_string == DROPPED_ALL.format(1, "0.000000")
+    old = GoalHandle(FollowJointTrajectoryGoal(trajectory=trajectory(
+        (0.5, [1.0, 0.5]), (1.0, [1.0, 0.5]), stamp_ns=world.now_ns - 5_000_000_000)))
+    on_goal(old)
+    assert (old.status, old.result.error_code) == ("rejected",
+                                                   FollowJointTrajectoryResult.INVALID_GOAL)
+    assert old.result.error_string == DROPPED_ALL.format(2, "4.000000")
+    run(world, 0.5)
+    assert angles(model, "pan", "lift") == pytest.approx([0.0, 0.0], abs=1e-3)  # unmoved
+    world.close()
+
+
+def test_a_command_whose_points_are_all_past_is_ignored_and_the_goal_goes_on():
+    """On the command topic the same trajectory is not taken (impl:166-171): the running goal
+    is neither replaced nor cancelled."""
+    world, bus, model = arm()
+    start(bus, "arm_controller")
+    on_goal, _ = bus.actions["/arm_bot/arm_controller/follow_joint_trajectory"]
+    goal = GoalHandle(goal_to([0.6, 0.0], 1.0))
+    on_goal(goal)
+    run(world, 0.2)
+    bus.subscriptions["/arm_bot/arm_controller/command"](trajectory((0.0, [-1.0, 0.0])))
+    run(world, 1.5)
+    assert goal.status == "succeeded"
+    assert angles(model, "pan")[0] == pytest.approx(0.6, abs=0.01)
+    assert any(DROPPED_ALL.format(1, "0.000000") in w for w in bus.warnings), bus.warnings
+    world.close()
+
+
+def test_a_first_point_at_time_zero_is_dropped_and_the_arm_goes_straight_to_the_next():
+    """A first point at time_from_start 0 with no stamp is dropped (init:344-353); the
+    trajectory runs from the current state to the next point: pan from 0 to 1 rad in 2 s is
+    at 0.5 after 1 s. Before: the desired state jumped to the first point (0.3) and pan was
+    at 0.65."""
+    world, bus, model = arm()
+    start(bus, "arm_controller")
+    on_goal, _ = bus.actions["/arm_bot/arm_controller/follow_joint_trajectory"]
+    handle = GoalHandle(FollowJointTrajectoryGoal(trajectory=trajectory(
+        (0.0, [0.3, 0.2]), (2.0, [1.0, 0.4]))))
+    on_goal(handle)
+    assert handle.status == "active"
+    run(world, 1.0)
+    assert angles(model, "pan", "lift") == pytest.approx([0.5, 0.2], abs=0.01)
+    run(world, 1.5)
+    assert handle.status == "succeeded"
+    assert angles(model, "pan", "lift") == pytest.approx([1.0, 0.4], abs=0.01)
+    world.close()
+
+
+@pytest.mark.parametrize("times", [(1.0, 1.0), (1.0, 2.0, 1.5)])
+def test_times_not_strictly_increasing_are_an_invalid_goal(times):
+    """"Trajectory message contains waypoints that are not strictly increasing in time."
+    → INVALID_GOAL (init:232-239; msg:119-134). Before: accepted."""
+    world, bus, model = arm()
+    start(bus, "arm_controller")
+    on_goal, _ = bus.actions["/arm_bot/arm_controller/follow_joint_trajectory"]
+    handle = GoalHandle(FollowJointTrajectoryGoal(trajectory=trajectory(
+        *[(t, [0.2 * k, 0.0]) for k, t in enumerate(times, 1)])))
+    on_goal(handle)
+    assert (handle.status, handle.result.error_code) == (
+        "rejected", FollowJointTrajectoryResult.INVALID_GOAL)
+    assert handle.result.error_string == \
+        "Trajectory message contains waypoints that are not strictly increasing in time."
+    world.close()
+
+
+WHEEL_BOT = """<?xml version="1.0"?>
+<robot name="wheel_bot">
+  <link name="world"/>
+  <joint name="fixed" type="fixed"><parent link="world"/><child link="base_link"/></joint>
+  <link name="base_link">
+    <inertial><mass value="2"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+  </link>
+  <link name="wheel">
+    <inertial><mass value="1"/><inertia ixx="0.006" ixy="0" ixz="0" iyy="0.006" iyz="0" izz="0.01"/></inertial>
+  </link>
+  <joint name="wheel_joint" type="continuous">
+    <parent link="base_link"/><child link="wheel"/><origin xyz="0 0 0.2"/><axis xyz="0 0 1"/>
+    <limit effort="50" velocity="2.0"/>
+  </joint>
+  <transmission name="wheel_transmission">
+    <type>transmission_interface/SimpleTransmission</type>
+    <joint name="wheel_joint"><hardwareInterface>hardware_interface/INTERFACE</hardwareInterface></joint>
+    <actuator name="wheel_motor"><mechanicalReduction>1</mechanicalReduction></actuator>
+  </transmission>
+  <gazebo>
+    <plugin name="gazebo_ros_control" filename="libgazebo_ros_control.so">
+      <robotNamespace>/wheel_bot</robotNamespace>
+    </plugin>
+  </gazebo>
+</robot>"""
+
+
+def wheel_bot(kind, position, **controller):
+    """A continuous joint (velocity limit 2 rad/s) at ``position``, a ``kind`` trajectory
+    controller running on it."""
+    interface = {"position": "PositionJointInterface", "velocity": "VelocityJointInterface"}[kind]
+    bus = RecordingBus({"/wheel_bot/wheel_controller": {
+        "type": f"{kind}_controllers/JointTrajectoryController", "joints": ["wheel_joint"],
+        **controller}})
+    world = World(bus, ray_threads=1)
+    model = world.spawn_urdf("wheel_bot", WHEEL_BOT.replace("INTERFACE", interface),
+                             joints={"wheel_joint": position})
+    manager = "/wheel_bot/controller_manager"
+    assert bus.services[f"{manager}/load_controller"](
+        LoadControllerRequest("wheel_controller")).ok, bus.warnings
+    assert bus.services[f"{manager}/switch_controller"](SwitchControllerRequest(
+        start_controllers=["wheel_controller"], strictness=2)).ok
+    return world, bus, model
+
+
+def test_a_continuous_joint_takes_the_short_way_to_a_new_trajectory():
+    """Continuous joints get a wraparound offset: the new trajectory is shifted by whole turns
+    to start within pi of the current state (init:431-440; joint_trajectory_segment.h:222-243;
+    angle_wraparound for continuous joints, impl:268-269). From 6.0 rad a goal of 0.1 rad
+    goes to 0.1 + 2 pi (0.38 rad forward); before, the wheel unwound 5.9 rad back to 0.1."""
+    world, bus, model = wheel_bot("position", 6.0, constraints={"goal_time": 1.0})
+    on_goal, _ = bus.actions["/wheel_bot/wheel_controller/follow_joint_trajectory"]
+    handle = GoalHandle(FollowJointTrajectoryGoal(trajectory=trajectory(
+        (1.0, [0.1]), (5.0, [0.1 + 2 * math.pi]), joints=("wheel_joint",))))
+    on_goal(handle)
+    run(world, 1.0)
+    assert model.robot.joint_position_velocity("wheel_joint")[0] == \
+        pytest.approx(0.1 + 2 * math.pi, abs=0.01)
+    run(world, 4.5)  # the offset holds for the whole trajectory: one more turn
+    assert model.robot.joint_position_velocity("wheel_joint")[0] == \
+        pytest.approx(0.1 + 4 * math.pi, abs=0.01)
+    assert handle.status == "succeeded"
+    world.close()
+
+
+def test_a_continuous_joints_position_error_is_the_shortest_angle():
+    """The position error is shortest_angular_distance(actual, desired) (impl:782): a velocity
+    trajectory controller (p 10) whose wheel, held to 2 rad/s by its URDF limit, falls more
+    than pi behind a ramp from 0.5 to 10 rad in 1 s settles at 10 - 2 pi, the same angle (the
+    first point, 0.5 rad, is within pi: no wraparound offset). Before, with desired - actual,
+    it went on to 10."""
+    world, bus, model = wheel_bot("velocity", 0.0, gains={"wheel_joint": {"p": 10.0}})
+    bus.subscriptions["/wheel_bot/wheel_controller/command"](
+        trajectory((0.5, [0.5]), (1.5, [10.0]), joints=("wheel_joint",)))
+    run(world, 5.0)
+    position, velocity = model.robot.joint_position_velocity("wheel_joint")
+    assert position == pytest.approx(10.0 - 2 * math.pi, abs=0.01)
+    assert abs(velocity) < 0.01
+    state = bus.last("/wheel_bot/wheel_controller/state")
+    assert state.desired.positions[0] == pytest.approx(10.0)
+    assert state.error.positions[0] == pytest.approx(0.0, abs=0.01)
+    world.close()

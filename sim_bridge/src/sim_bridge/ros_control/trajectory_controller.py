@@ -14,8 +14,21 @@ As ros_controllers' joint_trajectory_controller:
   goal succeeds once its last point's time has passed with every joint inside its goal
   tolerance, and aborts if that has not happened ``goal_time`` later, or as soon as a
   joint leaves its path tolerance; cancelling holds the joints where they are;
+- as Noetic's initJointTrajectory (ros_controllers noetic-devel 678b92a
+  joint_trajectory_controller/include/joint_trajectory_controller/init_joint_trajectory.h,
+  "init" below): times must increase strictly (init:232-239); the points at or before the
+  next update are dropped (init:321-363; a first point at time_from_start 0 without a stamp
+  is one), and a trajectory left with none is refused with Noetic's "Dropping all N
+  trajectory point(s), …" (init:336-342); a continuous joint's new trajectory is shifted by
+  whole turns to start within pi of its current position (init:431-440,
+  joint_trajectory_segment.h:222-243);
+- the position error of a revolute or continuous joint is the shortest angle from the actual
+  to the desired position (joint_trajectory_controller_impl.h:782); a prismatic joint's is
+  the difference (Noetic wraps it too, a known fault: ros_controllers issue #432, its Noetic
+  fix #623 unmerged; not copied);
 - an invalid trajectory (wrong joints, wrong lengths, NaN) is refused with
   INVALID_JOINTS or INVALID_GOAL and a message saying why; the controller keeps going.
+  OLD_HEADER_TIMESTAMP is never returned (no Noetic code does).
 
 Output: position kind, the desired position; velocity and effort kinds,
 ``velocity_ff``·(desired velocity) + PID(position error, velocity error) (ros_controllers
@@ -91,6 +104,11 @@ class JointTrajectoryController(Controller):
         self.goal_time_tolerance = self.goal_time
         self._pending: Optional[JointTrajectory] = None
         self.now_ns = 0
+        self.period_ns = int(round(hardware.step_size * 1e9))
+        types = [hardware.joints[j].joint_type for j in self.joints]
+        # angle_wraparound_ (impl:268-269); the error wraps for revolute joints too (impl:782)
+        self.wraparound = np.array([t == "continuous" for t in types])
+        self.angular = np.array([t in ("continuous", "revolute") for t in types])
 
     # --- incoming trajectories ------------------------------------------------------------
     def _on_command(self, message: JointTrajectory) -> None:
@@ -137,6 +155,8 @@ class JointTrajectoryController(Controller):
         return tolerances
 
     def _build(self, message: JointTrajectory, now_ns: int) -> Trajectory:
+        """initJointTrajectory, with ``now_ns`` the last update: the trajectory is taken at
+        the next one (impl:508-509, :538)."""
         names = list(message.joint_names)
         unknown = [n for n in names if n not in self.joints]
         if unknown or len(set(names)) != len(names):
@@ -148,9 +168,22 @@ class JointTrajectoryController(Controller):
                                     f"{self.joints} (allow_partial_joints_goal is false)")
         order = [names.index(j) if j in names else None for j in self.joints]
         positions, velocities, _ = self._current()
-        start_ns = message.header.stamp.to_nsec() or now_ns
+        times = [p.time_from_start.to_nsec() for p in message.points]
+        if any(a >= b for a, b in zip(times, times[1:])):  # init:232-239, msg:119-134
+            raise TrajectoryRefused(Result.INVALID_GOAL, "Trajectory message contains "
+                                    "waypoints that are not strictly increasing in time.")
+        next_ns = now_ns + self.period_ns
+        start_ns = message.header.stamp.to_nsec() or next_ns  # msg:69-73
+        kept = {k for k, t in enumerate(times) if start_ns + t > next_ns}  # msg:150-166
+        if times and not kept:  # init:333-343
+            past = (next_ns - (start_ns + times[-1])) / 1e9
+            raise TrajectoryRefused(Result.INVALID_GOAL, (
+                f"Dropping all {len(times)} trajectory point(s), as they occur before the "
+                f"current time.\nLast point is {past:f}s in the past."))
         points = []
         for number, point in enumerate(message.points):
+            if number not in kept:
+                continue
             for field in ("positions", "velocities", "accelerations"):
                 values = getattr(point, field)
                 if values and len(values) != len(names):
@@ -169,11 +202,19 @@ class JointTrajectoryController(Controller):
                 if point.velocities else None,
                 self._full(point.accelerations, order, np.zeros(len(self.joints)))
                 if point.accelerations else None))
-        if points and points[-1].time < now_ns / 1e9:
-            raise TrajectoryRefused(Result.OLD_HEADER_TIMESTAMP,
-                                    "the trajectory ends before now (header.stamp too old)")
+        if points:  # the wraparound offset of continuous joints (init:431-440)
+            offset = np.where(self.wraparound,
+                              wraparound_offset(positions, points[0].positions), 0.0)
+            for point in points:
+                point.positions = point.positions + offset
         return Trajectory(Waypoint(now_ns / 1e9, positions, velocities, np.zeros_like(positions)),
                           points)
+
+    def _error(self, desired: np.ndarray, actual: np.ndarray) -> np.ndarray:
+        """state_error_.position (impl:782): shortest_angular_distance(actual, desired) for
+        revolute and continuous joints; the difference for prismatic ones."""
+        return np.where(self.angular, shortest_angular_distance(actual, desired),
+                        desired - actual)
 
     @staticmethod
     def _full(values, order, fallback) -> np.ndarray:
@@ -203,6 +244,7 @@ class JointTrajectoryController(Controller):
 
     def update(self, now_ns, dt):
         self.now_ns = now_ns
+        self.period_ns = int(round(dt * 1e9))
         if self._pending is not None:
             message, self._pending = self._pending, None
             try:
@@ -214,7 +256,7 @@ class JointTrajectoryController(Controller):
         t = now_ns / 1e9
         desired, desired_velocity, _ = self.trajectory.sample(t)
         actual, actual_velocity, _ = self._current()
-        error = desired - actual
+        error = self._error(desired, actual)
         self._command(desired, desired_velocity, error, desired_velocity - actual_velocity, dt)
         if self.goal is not None:
             self._monitor(t, error, actual_velocity, desired, desired_velocity, actual)
@@ -250,7 +292,7 @@ class JointTrajectoryController(Controller):
         if t < end:
             return
         goal = self.goal_tolerance
-        final_error = self.trajectory.goal - actual
+        final_error = self._error(self.trajectory.goal, actual)
         inside = np.all((goal <= 0) | (np.abs(final_error) <= goal))
         stopped = self.stopped_velocity <= 0 or np.all(np.abs(actual_velocity) <=
                                                        self.stopped_velocity)
@@ -274,7 +316,7 @@ class JointTrajectoryController(Controller):
         message.actual = JointTrajectoryPoint(positions=actual.tolist(),
                                               velocities=actual_velocity.tolist())
         message.error = JointTrajectoryPoint(
-            positions=(desired - actual).tolist(),
+            positions=self._error(desired, actual).tolist(),
             velocities=(desired_velocity - actual_velocity).tolist())
         return message
 
@@ -282,6 +324,25 @@ class JointTrajectoryController(Controller):
         self._cancel_active("the controller was unloaded")
         self._subscription.unregister()
         self.state_out.unregister()
+
+
+def shortest_angular_distance(start, end):
+    """angles::shortest_angular_distance: normalize_angle(end - start), in (-pi, pi]."""
+    difference = np.asarray(end, dtype=float) - np.asarray(start, dtype=float)
+    positive = np.fmod(np.fmod(difference, 2 * np.pi) + 2 * np.pi, 2 * np.pi)
+    return np.where(positive > np.pi, positive - 2 * np.pi, positive)
+
+
+def wraparound_offset(previous, following):
+    """wraparoundJointOffset (joint_trajectory_segment.h:222-243): whole turns to add to
+    ``following`` so that it lies within pi of ``previous``."""
+    previous = np.asarray(previous, dtype=float)
+    following = np.asarray(following, dtype=float)
+    distance = shortest_angular_distance(previous, following)
+    at_pi = np.abs(np.abs(distance) - np.pi) < 1e-9  # :234-238
+    distance = np.where(at_pi, np.where(following > previous, np.abs(distance),
+                                        -np.abs(distance)), distance)
+    return (previous + distance) - following
 
 
 class PositionTrajectoryController(JointTrajectoryController):
