@@ -24,7 +24,12 @@ gazebo_ros_control/src/default_robot_hw_sim.cpp; "hw_sim" below), with its joint
   its most force (hw_sim:240, :363); 0 leaves the joint free, as ODE's ``fmax`` 0 does.
   Effort joints: the (saturated) command as a joint torque (hw_sim:313-318).
 - before a controller commands them, position joints hold where they were spawned (or set
-  by ``set_model_configuration``), velocity joints hold still, effort joints are free.
+  by ``spawn_model -J`` or ``set_model_configuration``), velocity joints hold still, effort
+  joints are free. Here sim_bridge differs on purpose: Noetic's position command starts at
+  0 (hw_sim:138) and is written every step (hw_sim:320-326), so until a controller starts a
+  position-controlled arm is driven to 0 and a spawn or ``-J`` pose is lost, a known fault
+  (gazebo_ros_pkgs issue #93, open, labelled bug) that the design does not copy
+  (sim_bridge/doc/ros_control.md, "Where sim_bridge differs on purpose").
 
 Not read: ``<safety_controller>`` soft limits (hw_sim:420-421, :456-482), the
 ``gazebo_ros_control/pid_gains`` (hw_sim:216-245), ``eStopTopic``.
@@ -254,8 +259,9 @@ class RobotHardware:
         return limits
 
     def hold(self) -> None:
-        """The resting commands: position joints where they are, velocity joints still,
-        effort joints free."""
+        """The resting commands: position joints where they are (Noetic: 0, hw_sim:138, a
+        fault not copied, see the module's docstring), velocity joints still, effort joints
+        free."""
         self.read()
         for position, handle in zip(self.positions, self.joints.values()):
             handle.command = float(position) if handle.interface == "position" else 0.0
