@@ -74,7 +74,9 @@ class ArmControl(unittest.TestCase):
         publisher.publish(Float64(0.025))
         wait_until(lambda: abs(self.position("finger_joint") - 0.025) < 0.001,
                    "the finger at 0.025 m")
-        self.assertEqual(self.joints.name, ["pan", "lift", "finger_joint"])
+        # in name order, as Noetic's joint_state_controller walks the hardware's std::map
+        # (ros_controllers noetic-devel 678b92a joint_state_controller.cpp:56)
+        self.assertEqual(self.joints.name, ["finger_joint", "lift", "pan"])
 
 
 if __name__ == "__main__":
