@@ -359,3 +359,28 @@ class Rate:
 
     def reset(self, now_ns: int) -> None:
         self.next_ns = now_ns
+
+
+def gazebo_seconds(ns: int) -> float:
+    """A time difference as Gazebo's ``common::Time::Double()`` makes it (whole seconds plus
+    nanoseconds times 1e-9), for comparisons with a period in seconds as the plugins make
+    them."""
+    return ns // 1_000_000_000 + (ns % 1_000_000_000) * 1e-9
+
+
+class Throttle:
+    """gazebo_plugins' own rate check on top of whatever calls it: ``ready(now)`` when at
+    least 1/rate seconds (``common::Time::Double()``) have passed since the last message,
+    ``mark(now)`` when one went out (``last_update_time_ = now``). The last message's time
+    starts at ``last_ns`` (Gazebo's ``common::Time()``, 0, unless the plugin sets it at
+    load). A rate of 0 or less: always ready."""
+
+    def __init__(self, rate_hz: float, last_ns: int = 0):
+        self.period = 1.0 / rate_hz if rate_hz > 0 else 0.0
+        self.last_ns = last_ns
+
+    def ready(self, now_ns: int) -> bool:
+        return self.period == 0.0 or gazebo_seconds(now_ns - self.last_ns) >= self.period
+
+    def mark(self, now_ns: int) -> None:
+        self.last_ns = now_ns

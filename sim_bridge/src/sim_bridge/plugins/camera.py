@@ -12,9 +12,12 @@ along the sensor frame's +x, +z up), ``<update_rate>`` (Hz of simulated time; 0 
 the world's seeded generator). From the plugin, as gazebo_plugins' camera utilities read
 them: ``cameraName`` (empty), ``imageTopicName`` (image_raw), ``cameraInfoTopicName``
 (camera_info), ``frameName`` (empty, as upstream leaves it; the model's tf_prefix
-applied), ``updateRate`` (0: the sensor's), ``hackBaseline`` (0), ``focalLength``, ``Cx``,
-``Cy``, ``CxPrime`` (0: computed), ``distortionK1`` ``K2`` ``K3`` ``T1`` ``T2`` (0). Topics
-are ``<robotNamespace>/<cameraName>/<topic>``.
+applied), ``updateRate`` (0: every frame of the sensor; else a frame once at least
+1/updateRate s have passed since the last published, so never above the sensor's rate),
+``hackBaseline`` (0), ``focalLength``, ``Cx``, ``Cy``, ``CxPrime`` (0: computed),
+``distortionK1`` ``K2`` ``K3`` ``T1`` ``T2`` (0), ``autoDistortion`` (false: true takes the
+sensor's ``<distortion>`` coefficients), ``borderCrop`` and ``triggerTopicName`` (read, no
+effect). Topics are ``<robotNamespace>/<cameraName>/<topic>``.
 
 CameraInfo is Gazebo's: f = width / (2 tan(hfov / 2)) on both axes (square pixels),
 cx = (width + 1) / 2, cy = (height + 1) / 2, P's fourth column -f * hackBaseline, plumb_bob
@@ -36,8 +39,8 @@ import numpy as np
 import pybullet as pb
 from sensor_msgs.msg import CameraInfo, Image, PointCloud2, PointField
 
-from sim_bridge.plugins.base import (Plugin, PluginError, Rate, SensorPlugin, element_pose,
-                                     stamp)
+from sim_bridge.plugins.base import (Plugin, PluginError, Rate, SensorPlugin, Throttle,
+                                     element_pose, stamp)
 
 # Gazebo's image formats sim_bridge renders → (ROS encoding, channels)
 FORMATS = {"R8G8B8": ("rgb8", 3), "RGB_INT8": ("rgb8", 3), "B8G8R8": ("bgr8", 3),
@@ -131,6 +134,9 @@ class Camera(SensorPlugin):
     # the topics' defaults (the depth cameras' differ)
     IMAGE_TOPIC = "image_raw"
     INFO_TOPIC = "camera_info"
+    # the plugin's <updateRate> throttles the sensor's frames (gazebo_ros_camera,
+    # gazebo_ros_multicamera); the depth cameras keep their own rule
+    PLUGIN_RATE_THROTTLES_FRAMES = True
 
     def __init__(self, context, spec, sensor, head: Optional["Head"] = None):
         """``head``: one camera of a multicamera sensor; None for the sensor's one
@@ -147,8 +153,21 @@ class Camera(SensorPlugin):
                 head.orientation, physicsClientId=context.client)
         plugin_rate = self.number("updateRate", 0.0)
         sensor_rate = _number(sensor.element, "update_rate", 0.0, sensor.name)
-        rate = plugin_rate if plugin_rate > 0 else sensor_rate
-        self.rate = Rate(rate)
+        if self.PLUGIN_RATE_THROTTLES_FRAMES:
+            # the sensor renders at its <update_rate>; GazeboRosCamera::OnNewFrame publishes a
+            # frame when at least 1/updateRate s have passed since the last it published
+            # (gazebo_plugins/src/gazebo_ros_camera.cpp:116, :130; the period from
+            # gazebo_ros_camera_utils.cpp:151-157, :441-444; gazebo_ros_multicamera.cpp:116,
+            # :130): never faster than the sensor, and a rate that does not divide the
+            # sensor's takes the next frame after each period
+            self.rate = Rate(sensor_rate)
+            self.throttle = Throttle(plugin_rate)
+            rate = sensor_rate if plugin_rate <= 0 else (
+                plugin_rate if sensor_rate <= 0 else min(plugin_rate, sensor_rate))
+        else:  # the depth cameras: the plugin's rate, else the sensor's (unchanged)
+            rate = plugin_rate if plugin_rate > 0 else sensor_rate
+            self.rate = Rate(rate)
+            self.throttle = Throttle(0.0)
         frames = rate if rate > 0 else 1.0 / context.step_size  # a second of simulated time
         frame_seconds = self.view.width * self.view.height * SECONDS_PER_PIXEL
         if frames * frame_seconds > COSTLY_SHARE:
@@ -165,7 +184,13 @@ class Camera(SensorPlugin):
         self.frame_id = self.frame(self.param("frameName", ""))
         camera_name = (self.param("cameraName", "") or "") + (head.suffix if head else "")
         self.camera_name = camera_name.strip("/")
-        self.info = self._camera_info(None if head is None else head.baseline)
+        # read by GazeboRosCameraUtils::Load and of no effect here: the trigger topic serves
+        # only the triggered cameras (CanTriggerCamera() is false for these,
+        # gazebo_ros_camera_utils.cpp:128-130, :358, :375-378); borderCrop crops Gazebo's
+        # distorted image (:248-254, :553-556), and the image here is not distorted
+        self.param("triggerTopicName", "image_trigger")
+        self.flag("borderCrop", True)
+        self.info = self._camera_info(None if head is None else head.baseline, element)
         self.image_out = self.publisher("imageTopicName", self.IMAGE_TOPIC, Image)
         self.info_out = self.publisher("cameraInfoTopicName", self.INFO_TOPIC, CameraInfo)
 
@@ -182,10 +207,22 @@ class Camera(SensorPlugin):
             return topic
         return f"{camera_name}/{topic}"
 
-    def _camera_info(self, baseline: Optional[float]) -> CameraInfo:
-        """Gazebo's CameraInfo; ``baseline`` overrides ``hackBaseline`` (a stereo head's)."""
+    def _camera_info(self, baseline: Optional[float], camera=None) -> CameraInfo:
+        """Gazebo's CameraInfo (gazebo_plugins/src/gazebo_ros_camera_utils.cpp:503-618);
+        ``baseline`` overrides ``hackBaseline`` (a stereo head's); ``camera`` is the
+        ``<camera>`` element, whose ``<distortion>`` ``autoDistortion`` takes."""
         view = self.view
-        focal = self.number("focalLength", 0.0) or view.focal_length
+        focal = self.number("focalLength", 0.0)
+        if focal == 0:
+            focal = view.focal_length
+        elif not math.isclose(focal, view.focal_length, rel_tol=0.0, abs_tol=1e-6):
+            # ignition::math::equal's tolerance, 1e-6 (gazebo_ros_camera_utils.cpp:524-535)
+            self.context.bus.warn(
+                f"model '{self.context.model_name}': plugin '{self.spec.name}' "
+                f"({self.spec.filename}): <focalLength> {focal:g} is inconsistent with the "
+                f"image's width {view.width} and horizontal_fov {view.hfov:g}: width / (2 "
+                f"tan(hfov / 2)) is {view.focal_length:g}; CameraInfo carries {focal:g}, as "
+                "in Gazebo")
         self.number("CxPrime", 0.0)  # read by gazebo_plugins and never put into CameraInfo
         cx = self.number("Cx", 0.0) or (view.width + 1.0) / 2.0
         cy = self.number("Cy", 0.0) or (view.height + 1.0) / 2.0
@@ -195,8 +232,14 @@ class Camera(SensorPlugin):
         info.header.frame_id = self.frame_id
         info.width, info.height = view.width, view.height
         info.distortion_model = "plumb_bob"
+        # D = {k1, k2, t1, t2, k3} (gazebo_ros_camera_utils.cpp:580-584)
         info.D = [self.number(f"distortion{name}", 0.0) for name in ("K1", "K2", "T1", "T2",
                                                                       "K3")]
+        if self.flag("autoDistortion", False):
+            # the sensor's own <distortion> k1 k2 p1 p2 k3 replace the plugin's (:559-575)
+            distortion = camera.find("distortion") if camera is not None else None
+            info.D = [_number(distortion, name, 0.0, self.spec.name)
+                      for name in ("k1", "k2", "p1", "p2", "k3")]
         info.K = [focal, 0.0, cx, 0.0, focal, cy, 0.0, 0.0, 1.0]
         info.R = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]
         info.P = [focal, 0.0, cx, -focal * baseline, 0.0, focal, cy, 0.0, 0.0, 0.0, 1.0, 0.0]
@@ -224,8 +267,9 @@ class Camera(SensorPlugin):
         self.rate.reset(now_ns)
 
     def after_step(self, now_ns: int) -> None:
-        if not self.rate.due(now_ns) or not self.active():
+        if not self.rate.due(now_ns) or not self.active() or not self.throttle.ready(now_ns):
             return
+        self.throttle.mark(now_ns)
         pixels, depth = self.capture()
         self.publish(stamp(now_ns), pixels, depth)
 
@@ -262,6 +306,8 @@ class DepthCamera(Camera):
     (``pointCloudTopicName``, points: x y z rgb in the optical frame, x right, y down, z
     ahead; NaN where the depth image has none), as gazebo_plugins fills them (a pixel's ray
     through (width - 1) / 2)."""
+
+    PLUGIN_RATE_THROTTLES_FRAMES = False
 
     def __init__(self, context, spec, sensor):
         super().__init__(context, spec, sensor)
