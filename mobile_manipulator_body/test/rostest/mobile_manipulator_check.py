@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """rostest node: the mobile manipulator's documented commands, as typed, against the
 simulator's truth: the arm reaches its targets and comes home within 0.01 rad; the base
-drives 0.9 m (± 5%) in 3 s at 0.3 m/s with the arm on it."""
+drives 0.3 m/s (± 5%) for as long as its commands last (0.9 m in 3 s) with the arm on it."""
 import math
 import subprocess
 import unittest
@@ -16,6 +16,7 @@ from sensor_msgs.msg import JointState
 from gazebo_msgs.srv import GetModelState, GetWorldProperties
 from sim_bridge.testing import service_proxy, wait_until
 
+CMD_VEL_TIMEOUT = 0.5   # s, config/base_control.yaml
 JOINTS = ["arm_base_joint", "shoulder_joint", "bottom_wrist_joint", "elbow_joint", "top_wrist_joint"]
 MOVE = ("rostopic pub /arm_controller/command trajectory_msgs/JointTrajectory '{joint_names: "
         "[\"arm_base_joint\",\"shoulder_joint\",\"bottom_wrist_joint\",\"elbow_joint\","
@@ -63,15 +64,28 @@ class MobileManipulator(unittest.TestCase):
         command = rospy.Publisher("/robot_base_velocity_controller/cmd_vel", Twist, queue_size=1)
         forward = Twist()
         forward.linear.x = 0.3
+        sent = []   # simulated times of the commands
+
+        def send(_):
+            command.publish(forward)
+            sent.append(rospy.get_rostime().to_sec())
+
         # cmd_vel_timeout is 0.5 s: keep commanding, as a teleop does
-        timer = rospy.Timer(rospy.Duration(0.05), lambda _: command.publish(forward))
+        timer = rospy.Timer(rospy.Duration(0.05), send)
         began = self.world().sim_time
         wait_until(lambda: self.world().sim_time > began + 3.0, "3 s of driving")
         timer.shutdown()
         command.publish(Twist())
+        stopped_at = rospy.get_rostime().to_sec()
         wait_until(lambda: self.world().sim_time > began + 4.5, "the base to stop")
         travelled = math.dist(start, position())
-        self.assertAlmostEqual(travelled, 0.9, delta=0.045)
+        # each command drives until the next or for cmd_vel_timeout (0.5 s), whichever comes
+        # first: on a busy machine this node may send late while the simulation runs on, and
+        # the base rightly stops in the gap (3 s when nothing is late: 0.9 m)
+        driven = sum(min(later - earlier, CMD_VEL_TIMEOUT)
+                     for earlier, later in zip(sent, sent[1:] + [stopped_at]))
+        self.assertGreater(driven, 2.0, f"commands covered only {driven:.2f} s of driving")
+        self.assertAlmostEqual(travelled, 0.3 * driven, delta=0.05 * 0.3 * driven)
         # the controller's odometry says so too
         wait_until(lambda: odometry, "odometry on /robot_base_velocity_controller/odom")
         self.assertEqual(odometry[-1].header.frame_id, "odom")
