@@ -4,8 +4,10 @@ geometry_msgs/WrenchStamped.
 Parameters as gazebo_plugins (noetic): ``jointName`` (required; a joint of the model as
 Gazebo builds it, so not a fixed joint it lumps), ``topicName`` (required),
 ``gaussianNoise`` (0; standard deviation added to each of the six numbers, seeded),
-``updateRate`` (0: every step), ``robotNamespace``. The header's frame is the joint's child
-link (tf_prefix applied).
+``updateRate`` (0: every step; else a message once at least 1/updateRate s have passed
+since the last one, counted from 0, and only while someone subscribes:
+gazebo_plugins/src/gazebo_ros_ft_sensor.cpp:173-179, :228), ``robotNamespace``. The
+header's frame is the joint's child link (tf_prefix applied).
 
 What the plugin publishes is Gazebo's ``Joint::GetForceTorque(0)`` ``body2Force`` and
 ``body2Torque``: the load the child's side puts on the joint, i.e. minus the wrench the
@@ -25,7 +27,7 @@ import numpy as np
 import pybullet as pb
 from geometry_msgs.msg import WrenchStamped
 
-from sim_bridge.plugins.base import Plugin, PluginError, Rate, wrench_stamped
+from sim_bridge.plugins.base import Plugin, PluginError, Throttle, wrench_stamped
 from sim_bridge.poses import quaternion_matrix
 
 
@@ -50,7 +52,8 @@ class FTSensor(Plugin):
                                         physicsClientId=context.client)
         self.frame_id = self.frame(robot.model.joints[joint].child)
         self.noise = self.number("gaussianNoise", 0.0)
-        self.rate = Rate(self.number("updateRate", 0.0))
+        # last_time_ is never set at load: common::Time(), 0
+        self.throttle = Throttle(self.number("updateRate", 0.0))
         self.output = context.bus.publisher(self.topic(topic), WrenchStamped, queue_size=1)
 
     def wrench(self):
@@ -66,8 +69,11 @@ class FTSensor(Plugin):
         return -force, -torque
 
     def after_step(self, now_ns: int) -> None:
-        if not self.rate.due(now_ns) or not self.context.bus.listened(self.output):
+        # the rate first, then the subscribers; the time of the last message is kept only
+        # when one went out (gazebo_plugins/src/gazebo_ros_ft_sensor.cpp:173-179, :228)
+        if not self.throttle.ready(now_ns) or not self.context.bus.listened(self.output):
             return
+        self.throttle.mark(now_ns)
         force, torque = self.wrench()
         if self.noise > 0:
             force = force + self.context.rng.normal(0.0, self.noise, 3)
@@ -75,4 +81,6 @@ class FTSensor(Plugin):
         self.output.publish(wrench_stamped(now_ns, self.frame_id, force, torque))
 
     def reset(self, now_ns: int) -> None:
-        self.rate.reset(now_ns)
+        # Noetic's plugin has no Reset; its world's time goes back to 0, and so then does
+        # the difference it checks. Here time goes on: the period starts again from now
+        self.throttle.mark(now_ns)
