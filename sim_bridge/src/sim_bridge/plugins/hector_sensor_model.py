@@ -19,15 +19,21 @@ This is hector's model itself, not a simplification; the random numbers come fro
 model's generator (``context.rng``, seeded from the world's seed), so a seed repeats a run.
 hector's dynamic_reconfigure servers for these parameters are not offered.
 
-**Update timer** (hector's ``UpdateTimer``): ``updateRate`` (Hz) or ``updatePeriod`` (s;
-it wins), and ``updateOffset`` (s). A period of 0 runs every step; otherwise an update
-falls on the steps at ``updateOffset + k period`` of simulated time (within half a step),
-not at a period after the previous one. ``dt`` is the time since the previous update, 0
-for the first after loading or a reset.
+**Update timer** (hector's ``UpdateTimer``, hector_gazebo melodic-devel de947fb
+hector_gazebo_plugins/include/hector_gazebo_plugins/update_timer.h): ``updateRate`` (Hz,
+:56-60) or ``updatePeriod`` (it wins, :62-71), and ``updateOffset`` (:73-82). The last two
+are read as Gazebo 9+ reads them, through ``sdf::Time``: two whole numbers, seconds and
+nanoseconds (sdformat sdf9 include/sdf/Types.hh:185-191), so ``0 250000000`` is 0.25 s and
+``0.25`` is 0 s (the seconds stop at the dot, the nanoseconds are not read): an update at
+every step, as in Gazebo (a warning says so). A period of 0 runs every step; otherwise an
+update falls on the steps at ``updateOffset + k period`` of simulated time (within half a
+step, :141-156), not at a period after the previous one. ``dt`` is the time since the
+previous update, 0 for the first after loading or a reset (:132-139).
 """
 from __future__ import annotations
 
 import math
+import re
 from typing import Optional, Union
 
 import numpy as np
@@ -93,18 +99,49 @@ class SensorModel:
         return self.current_drift + self.offset
 
 
+_WHOLE = re.compile(r"\s*([+-]?\d+)")
+
+
+def sdf_time(text: str) -> float:
+    """Seconds of an ``sdf::Time`` read from ``text`` as ``_in >> sec >> nsec`` reads it
+    (sdformat sdf9 include/sdf/Types.hh:185-191): each a whole number; where one cannot be
+    read it and what follows stay 0."""
+    seconds = _WHOLE.match(text)
+    if seconds is None:
+        return 0.0
+    nanoseconds = _WHOLE.match(text, seconds.end())
+    return int(seconds.group(1)) + (int(nanoseconds.group(1)) * 1e-9 if nanoseconds else 0.0)
+
+
 class UpdateTimer:
     """hector's UpdateTimer (see the module's notes)."""
 
     def __init__(self, plugin: Plugin, default_rate: float = 0.0):
         rate = plugin.number("updateRate", default_rate)
         self.period = 1.0 / rate if rate > 0 else 0.0
-        if plugin.spec.text("updatePeriod"):
-            self.period = max(plugin.number("updatePeriod", 0.0), 0.0)
-        self.offset = plugin.number("updateOffset", 0.0)
+        if plugin.spec.text("updatePeriod") is not None:
+            self.period = max(self._time(plugin, "updatePeriod"), 0.0)
+        self.offset = 0.0
+        if plugin.spec.text("updateOffset") is not None:
+            self.offset = self._time(plugin, "updateOffset")
         self.step = plugin.context.step_size
         self._last_ns: Optional[int] = None
         self._previous_step_ns: Optional[int] = None
+
+    @staticmethod
+    def _time(plugin: Plugin, tag: str) -> float:
+        """``<tag>`` as the sdf::Time hector reads (update_timer.h:62-82), with a warning
+        when the text is not two whole numbers, seconds and nanoseconds."""
+        text = plugin.spec.text(tag) or ""
+        value = sdf_time(text)
+        if not re.fullmatch(r"\s*[+-]?\d+(\s+[+-]?\d+)?\s*", text):
+            plugin.context.bus.warn(
+                f"model '{plugin.context.model_name}': plugin '{plugin.spec.name}' "
+                f"({plugin.spec.filename}): <{tag}> '{text}' is read as Gazebo reads it, an "
+                f"sdf::Time of whole seconds and nanoseconds: {value:g} s"
+                + (" (an update at every step)" if tag == "updatePeriod" and value == 0 else "")
+                + "; write '<seconds> <nanoseconds>' (0 250000000 is 0.25 s) or <updateRate>")
+        return value
 
     def due(self, now_ns: int) -> bool:
         if self._previous_step_ns is not None and now_ns > self._previous_step_ns:
