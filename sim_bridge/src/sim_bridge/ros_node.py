@@ -413,7 +413,8 @@ class SimBridgeNode:
                 self.world.frame_state(request.relative_entity_name))
         response = GetModelStateResponse()
         response.header.stamp = rospy.Time(nsecs=self.world.now_ns)
-        response.header.frame_id = request.relative_entity_name or "world"
+        # the request's name as written, "" included (gazebo_ros_api_plugin.cpp:970)
+        response.header.frame_id = request.relative_entity_name
         _fill_pose(response.pose, position, orientation)
         _fill_twist(response.twist, linear, angular)
         response.success = True
@@ -437,8 +438,10 @@ class SimBridgeNode:
         return SetModelConfigurationResponse(True, "SetModelConfiguration: success")
 
     def _world_properties(self, _request):
-        return GetWorldPropertiesResponse(self.world.now, sorted(self.world.models),
-                                          self.world.gui, True, "GetWorldProperties: got properties")
+        # the models in the world's order; rendering is always reported enabled
+        # (gazebo_ros_api_plugin.cpp:1114-1115, :1122)
+        return GetWorldPropertiesResponse(self.world.now, list(self.world.models), True, True,
+                                          "GetWorldProperties: got properties")
 
     def _model_properties(self, request):
         properties = self.world.model_properties(request.model_name)

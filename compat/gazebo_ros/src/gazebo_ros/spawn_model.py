@@ -154,9 +154,16 @@ def read_description(args: argparse.Namespace) -> str:
     return xml
 
 
+# a <mesh> element's filename="package://" (gazebo_ros noetic-devel f9e1a46
+# scripts/spawn_model:155-163 rewrites these alone)
+MESH_FILENAME = re.compile(r"""(<mesh\b[^>]*?\bfilename\s*=\s*["'])package://""")
+
+
 def package_to_model(xml: str) -> str:
-    """``package://pkg/...`` → ``model://pkg/...``, as upstream's -package_to_model."""
-    return re.sub(r"package://", "model://", xml)
+    """``<mesh filename="package://pkg/...">`` → ``model://pkg/...``, as upstream's
+    -package_to_model: only mesh elements' filename attributes; any other ``package://``
+    (an SDF ``<uri>``, a plugin's parameter, a texture) stays as written."""
+    return MESH_FILENAME.sub(r"\1model://", xml)
 
 
 def answering_proxy(service: str, kind, timeout: float) -> rospy.ServiceProxy:

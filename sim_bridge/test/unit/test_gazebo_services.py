@@ -1,0 +1,186 @@
+"""The /gazebo services as sim_bridge's node answers them, called on its handlers with no
+master (the physics thread run inline), against Noetic's gazebo_ros_api_plugin.cpp
+(gazebo_ros_pkgs noetic-devel f9e1a46, gazebo_ros/src/gazebo_ros_api_plugin.cpp): what a
+request does, what it answers, and its answer when it cannot be done (sim_bridge/README.md,
+the services' table)."""
+import pytest
+from geometry_msgs.msg import Pose
+from std_srvs.srv import Empty, EmptyRequest
+
+from gazebo_msgs.msg import ModelState
+from gazebo_msgs.srv import (ApplyBodyWrench, ApplyBodyWrenchRequest, BodyRequest,
+                             BodyRequestRequest, DeleteModel, DeleteModelRequest,
+                             GetModelProperties, GetModelPropertiesRequest, GetModelState,
+                             GetModelStateRequest, GetPhysicsProperties,
+                             GetPhysicsPropertiesRequest, GetWorldProperties,
+                             GetWorldPropertiesRequest, JointRequest, JointRequestRequest,
+                             SetModelConfiguration, SetModelConfigurationRequest,
+                             SetModelState, SetModelStateRequest, SpawnModel,
+                             SpawnModelRequest)
+from sim_bridge.ros_node import Config, SimBridgeNode
+from world_fixtures import run
+
+BOX = """<robot name="box"><link name="base"><inertial><mass value="1"/><inertia ixx="0.01"
+  ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial><collision><geometry>
+  <box size="0.2 0.2 0.2"/></geometry></collision></link></robot>"""
+
+
+class Inline:
+    """The physics thread's hand-over, done at once."""
+
+    @staticmethod
+    def call(work):
+        return work()
+
+
+@pytest.fixture
+def node(world, monkeypatch):
+    simulator = SimBridgeNode(Config(), world, Inline())
+    # the tf_prefix is looked up at the master; there is none here
+    monkeypatch.setattr(SimBridgeNode, "_tf_prefix", staticmethod(lambda namespace: ""))
+    return simulator
+
+
+def call(node, kind, handler, **fields):
+    return node._guarded(handler, kind)(kind._request_class(**fields))
+
+
+def spawn(node, name, x=0.0):
+    pose = Pose()
+    pose.position.x, pose.position.z, pose.orientation.w = x, 0.1, 1.0
+    return call(node, SpawnModel, node._spawn_urdf, model_name=name, model_xml=BOX,
+                robot_namespace="/", initial_pose=pose, reference_frame="")
+
+
+def test_spawn_answers_and_a_name_in_use_is_refused(node):
+    """SpawnModel: success "SpawnModel: Successfully spawned entity" (:2747); a name in use
+    success false (:2692)."""
+    answer = spawn(node, "a")
+    assert answer.success and answer.status_message.startswith(
+        "SpawnModel: Successfully spawned entity")
+    again = spawn(node, "a")
+    assert not again.success and again.status_message.startswith("SpawnModel: ")
+    assert "exists already" in again.status_message
+
+
+def test_get_model_states_header_frame_is_the_request_as_written(node):
+    """res.header.frame_id = req.relative_entity_name (:970): "" stays "" (before:
+    "world"); the empty name, world and map are the world's frame (:1008-1011)."""
+    spawn(node, "a", x=1.0)
+    for frame in ("", "world", "map"):
+        answer = call(node, GetModelState, node._get_state, model_name="a",
+                      relative_entity_name=frame)
+        assert answer.success and answer.header.frame_id == frame
+        assert answer.pose.position.x == pytest.approx(1.0, abs=1e-6)
+        assert answer.status_message == "GetModelState: got properties"  # :1036
+
+
+def test_get_model_state_relative_to_another_model(node):
+    """model_pose - frame_pose (:1000-1002), the frame a model's name."""
+    spawn(node, "a", x=1.0)
+    spawn(node, "b", x=3.0)
+    answer = call(node, GetModelState, node._get_state, model_name="b",
+                  relative_entity_name="a")
+    assert answer.success and answer.pose.position.x == pytest.approx(2.0, abs=1e-6)
+    missing = call(node, GetModelState, node._get_state, model_name="b",
+                   relative_entity_name="nowhere")
+    assert not missing.success and missing.status_message.startswith("GetModelState: ")
+
+
+@pytest.mark.parametrize("kind, handler, fields", [
+    (GetModelState, "_get_state", dict(model_name="ghost")),
+    (DeleteModel, "_delete", dict(model_name="ghost")),
+    (GetModelProperties, "_model_properties", dict(model_name="ghost")),
+    (SetModelConfiguration, "_set_configuration",
+     dict(model_name="ghost", joint_names=["j"], joint_positions=[0.0])),
+    (SetModelState, "_set_state", dict(model_state=ModelState(model_name="ghost"))),
+    (ApplyBodyWrench, "_apply_wrench", dict(body_name="ghost::base")),
+])
+def test_a_model_that_does_not_exist_answers_success_false_naming_the_service(
+        node, kind, handler, fields):
+    """Each answers success false with its status message (:947, :828, :1054, :1809,
+    :1602, :1954) and the node goes on; here the message also names the models there
+    are."""
+    answer = call(node, kind, getattr(node, handler), **fields)
+    service = kind._type.split("/")[-1]
+    assert not answer.success and answer.status_message.startswith(f"{service}: ")
+    assert "ghost" in answer.status_message
+
+
+def test_world_properties_list_the_models_in_the_worlds_order_rendering_enabled(node):
+    """model_names in the world's order, the order they came in (:1114-1115; before:
+    sorted); rendering_enabled always true (:1121-1122; before: whether pybullet's window
+    is shown); sim_time the world's."""
+    spawn(node, "zeta")
+    spawn(node, "alpha")
+    run(node.world, 0.01)
+    answer = call(node, GetWorldProperties, node._world_properties)
+    assert list(answer.model_names) == ["ground", "zeta", "alpha"]
+    assert answer.rendering_enabled is True
+    assert answer.sim_time == pytest.approx(0.01)
+    assert answer.status_message == "GetWorldProperties: got properties"  # :1124
+
+
+def test_a_configuration_whose_lists_differ_in_length_is_refused(node):
+    """"joint name and position list have different lengths" (:1833-1838)."""
+    spawn(node, "a")
+    answer = call(node, SetModelConfiguration, node._set_configuration, model_name="a",
+                  joint_names=["x", "y"], joint_positions=[0.0])
+    assert not answer.success and "differ in length" in answer.status_message
+
+
+def test_clearing_with_unknown_names_answers_empty(node):
+    """clear_body_wrenches and clear_joint_forces have empty answers (:1737-1792)."""
+    assert isinstance(call(node, BodyRequest, node._clear_wrenches, body_name="ghost"),
+                      BodyRequest._response_class)
+    assert isinstance(call(node, JointRequest, node._clear_efforts, joint_name="ghost"),
+                      JointRequest._response_class)
+
+
+def test_pause_unpause_and_reset_world(node):
+    """pause_physics / unpause_physics (:1725-1735); reset_world puts the models back
+    (:1719-1723) and time goes on here (reset_simulation sets Gazebo's to 0)."""
+    spawn(node, "a")
+    node._guarded(node._pause, Empty)(EmptyRequest())
+    assert node.world.paused and not node.world.step()
+    node._guarded(node._unpause, Empty)(EmptyRequest())
+    run(node.world, 0.05)
+    node.world.set_state("a", (2.0, 0.0, 0.1), (0, 0, 0, 1))
+    before = node.world.now_ns
+    node._guarded(node._reset, Empty)(EmptyRequest())
+    assert node.world.pose("a")[0][0] == pytest.approx(0.0, abs=1e-6)
+    assert node.world.now_ns == before
+
+
+def test_physics_properties_report_the_step_and_gravity(node):
+    """get_physics_properties (:1479-1520)."""
+    answer = call(node, GetPhysicsProperties, node._get_physics)
+    assert answer.success and answer.time_step == pytest.approx(0.001)
+    assert (answer.gravity.x, answer.gravity.y, answer.gravity.z) == pytest.approx(
+        (0, 0, -9.8))
+
+
+def test_model_properties(node):
+    """get_model_properties (:1042-1106): bodies, geoms, joints, is_static."""
+    spawn(node, "a")
+    answer = call(node, GetModelProperties, node._model_properties, model_name="a")
+    assert answer.success and list(answer.body_names) == ["base"]
+    assert list(answer.geom_names) == ["base_collision"] and not answer.is_static
+    assert answer.status_message == "GetModelProperties: got properties"  # :1102
+
+
+def test_a_model_state_without_an_orientation_is_upright(node):
+    """set_model_state normalises the quaternion, and ignition's Normalize makes one of
+    length 0 the identity ("eliminates invalid rotation (0, 0, 0, 0)", :1588): a ModelState
+    that sets only the position, as course scripts write it, is accepted and the model
+    stands upright (_pose_parts reads an unset quaternion so, for every request)."""
+    spawn(node, "a")
+    node.world.set_state("a", (0.0, 0.0, 0.1), (0.0, 0.0, 0.3826834, 0.9238795))
+    state = ModelState(model_name="a")
+    state.pose.position.x, state.pose.position.z = 2.0, 0.1
+    answer = call(node, SetModelState, node._set_state, model_state=state)
+    assert answer.success, answer.status_message
+    assert answer.status_message == "SetModelState: set model state done"  # :1658
+    position, orientation = node.world.pose("a")
+    assert position[0] == pytest.approx(2.0, abs=1e-6)
+    assert orientation == pytest.approx((0, 0, 0, 1), abs=1e-6)
