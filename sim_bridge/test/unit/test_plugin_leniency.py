@@ -73,6 +73,10 @@ def test_gazebo_ros_controls_own_parameters_are_read(world, bus, diff_bot_xml):
     world.spawn_urdf("r", xml, (0, 0, 0))
     assert "r" in world.models
     assert not [w for w in bus.warnings if "does not read" in w or "robotSimType" in w]
+    # Kinetic's legacyModeNS, which Noetic reads no more (as Interbotix's files still write
+    # it): a verbose note, never a warning
+    (note,) = [d for d in bus.debugs if "<legacyModeNS>" in d]
+    assert "ignores <legacyModeNS>" in note and "Noetic" in note
 
 
 # --- what Gazebo loads with a warning ---------------------------------------------------

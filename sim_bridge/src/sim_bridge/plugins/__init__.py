@@ -74,6 +74,10 @@ RETIRED_TAGS = {
     # getWheelVelocities: left = v - w s/2, right = v + w s/2)
     "legacyMode": "Kinetic's gazebo_ros_diff_drive swapped the wheels' speeds when it was "
                   "true; Noetic's plugins read no such tag (dropped in Melodic)",
+    # kinetic-devel's gazebo_ros_control_plugin.cpp:116-117 read it (where robotParam is
+    # looked up); melodic-devel and noetic-devel (f9e1a46) read no such tag
+    "legacyModeNS": "Kinetic's gazebo_ros_control looked robotParam up by it; Noetic's "
+                    "reads no such tag (dropped in Melodic)",
 }
 
 

@@ -4,7 +4,8 @@ Plugin parameters as gazebo_ros_control's: ``robotNamespace`` (where the control
 and the controllers live; without it, the spawn request's namespace (spawn_model sends
 "/" at the top level), and for a model spawned with none the model's name, as
 gazebo_ros_control's default), ``controlPeriod`` (seconds; default the physics step),
-``robotParam`` and ``legacyModeNS`` (accepted; the spawned model's own description is used),
+``robotParam`` (accepted; the spawned model's own description is used; ``legacyModeNS``,
+which only Kinetic's plugin read, is a verbose note: sim_bridge.plugins.RETIRED_TAGS),
 ``robotSimType`` (DefaultRobotHWSim's behaviour; another class is named in a warning),
 ``eStopTopic`` (named in a warning: the emergency stop is not emulated).
 
@@ -102,7 +103,6 @@ class RosControl(Plugin):
                               "control")
         self.hardware = RobotHardware(context, transmissions, self.namespace)
         self.param("robotParam")  # the spawned model's own description is used
-        self.flag("legacyModeNS", False)  # how upstream finds robotParam: no effect here
         sim_type = self.param("robotSimType", DEFAULT_SIM_TYPE)
         if sim_type.strip() != DEFAULT_SIM_TYPE:
             context.bus.warn(f"plugin '{spec.name}': robotSimType '{sim_type}' is not emulated; "
