@@ -28,6 +28,8 @@ from sensor_msgs.msg import JointState
 from shape_msgs.msg import SolidPrimitive
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
+from sim_bridge.testing import wait_until
+
 START_LIMIT = 60.0       # s: move_group's actions up after roslaunch
 ANSWER_LIMIT = 5.0       # s: a bad request answered (the issue measured 3.1 s at most)
 MOTION_LIMIT = 30.0      # s: a good goal planned and executed
@@ -35,18 +37,6 @@ ARM = ["waist", "shoulder", "elbow", "wrist_angle"]
 TIP = "px100/ee_gripper_link"
 MOVE_GROUP = "/px100/move_group"
 REGION = "goal_constraints[0].position_constraints[0].constraint_region.primitive_poses[0]"
-
-
-def wait_until(condition, timeout, what):
-    deadline = rospy.get_time() + timeout
-    while not rospy.is_shutdown():
-        value = condition()
-        if value:
-            return value
-        if rospy.get_time() > deadline:
-            raise AssertionError(f"timed out after {timeout:.1f} s waiting for {what}")
-        rospy.sleep(0.01)
-    raise AssertionError("shut down")
 
 
 def joint_goal(positions, plan_only):
@@ -92,7 +82,7 @@ class HostileRequests(unittest.TestCase):
                                                           ExecuteTrajectoryAction)
         for client in (cls.move, cls.second_move, cls.execute, cls.second_execute):
             assert client.wait_for_server(rospy.Duration(START_LIMIT)), client.action_client.ns
-        wait_until(lambda: set(ARM) <= set(cls.joints), START_LIMIT, "joint_states")
+        wait_until(lambda: set(ARM) <= set(cls.joints), "joint_states", START_LIMIT)
 
     def arm(self):
         with self.lock:
@@ -185,7 +175,7 @@ class HostileRequests(unittest.TestCase):
                             feedback_cb=lambda f: monitoring.set() if f.state == "MONITOR"
                             else None)
         self.assertTrue(monitoring.wait(MOTION_LIMIT), "the first goal was never executed")
-        wait_until(lambda: self.arm()[0] < 1.1, 5.0, "the arm to move")
+        wait_until(lambda: self.arm()[0] < 1.1, "the arm to move", 5.0)
         state, result, text = self.answer(self.second_move, joint_goal([0.5, 0.0, 0.0, 0.0],
                                                                        True), MOTION_LIMIT)
         self.assertEqual(result.error_code.val, Codes.SUCCESS, text)
@@ -204,7 +194,7 @@ class HostileRequests(unittest.TestCase):
         answers a preempted execution PREEMPTED (-7)."""
         start = self.arm()
         self.execute.send_goal(trajectory_goal(start, [start[0] + 0.6] + start[1:], seconds=3.0))
-        wait_until(lambda: self.arm()[0] > start[0] + 0.01, 5.0, "the arm to move")
+        wait_until(lambda: self.arm()[0] > start[0] + 0.01, "the arm to move", 5.0)
         state, result, text = self.answer(self.second_execute, ExecuteTrajectoryGoal())
         self.assertEqual(result.error_code.val, Codes.SUCCESS, text)
         self.assertTrue(self.execute.wait_for_result(rospy.Duration(ANSWER_LIMIT)))
