@@ -19,6 +19,7 @@ import math
 
 import pybullet as pb
 
+from sim_bridge.plugins.base import gazebo_seconds
 from sim_bridge.plugins.drive_base import DriveBase, covariance
 from sim_bridge.poses import yaw_from_quaternion
 
@@ -26,11 +27,6 @@ from sim_bridge.poses import yaw_from_quaternion
 # the twist's is never set (all 0)
 POSE_COVARIANCE = covariance(1e-5, 1e-5, 1e-3)
 TWIST_COVARIANCE = [0.0] * 36
-
-
-def gazebo_seconds(ns: int) -> float:
-    """A non-negative time difference as Gazebo's common::Time::Double() makes it."""
-    return ns // 1_000_000_000 + (ns % 1_000_000_000) * 1e-9
 
 
 class PlanarMove(DriveBase):
