@@ -15,6 +15,10 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sim_checks import Simulator, angle_difference, drive  # noqa: E402
 
 TOLERANCE = 0.02  # 2 %
+# s of simulated time the run may last beyond the commanded duration: the test pauses
+# the simulator once it has seen the time pass, which a loaded machine does late; the
+# motion is judged over the time it really lasted
+OVERRUN = 0.5
 
 
 class Drive(unittest.TestCase):
@@ -35,9 +39,10 @@ class Drive(unittest.TestCase):
     def test_1_straight_1_metre_in_5_seconds(self):
         odom_before = self.odometry.pose.pose.position
         elapsed, before, after = drive(self.sim, self.command, 0.2, 0.0, 5.0)
-        self.assertLess(abs(elapsed - 5.0), 0.05)
+        self.assertGreaterEqual(elapsed, 5.0)
+        self.assertLess(elapsed, 5.0 + OVERRUN)
         travelled = math.hypot(after[0] - before[0], after[1] - before[1])
-        self.assertAlmostEqual(travelled, 1.0, delta=1.0 * TOLERANCE)
+        self.assertAlmostEqual(travelled, 0.2 * elapsed, delta=0.2 * elapsed * TOLERANCE)
         # odometry, published at 50 Hz, read once the robot has stopped moving
         self.sim.wait_sim_time(self.sim.sim_time() + 1.0)
         stopped = self.sim.truth("diff_bot")
@@ -52,9 +57,10 @@ class Drive(unittest.TestCase):
 
     def test_2_turn_2_radians_in_4_seconds(self):
         elapsed, before, after = drive(self.sim, self.command, 0.0, 0.5, 4.0)
-        self.assertLess(abs(elapsed - 4.0), 0.05)
+        self.assertGreaterEqual(elapsed, 4.0)
+        self.assertLess(elapsed, 4.0 + OVERRUN)
         turned = angle_difference(after[2], before[2])
-        self.assertAlmostEqual(turned, 2.0, delta=2.0 * TOLERANCE)
+        self.assertAlmostEqual(turned, 0.5 * elapsed, delta=0.5 * elapsed * TOLERANCE)
 
     def test_3_frictionless_casters_do_not_pull_it_sideways(self):
         elapsed, before, after = drive(self.sim, self.command, 0.4, 0.0, 5.0)

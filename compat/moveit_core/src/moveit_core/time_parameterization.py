@@ -1,28 +1,41 @@
-"""Time stamps for a path of joint positions, as MoveIt's default request adapter
-(AddTimeParameterization: iterative parabolic time parameterization) gives them: every
-joint's speed within its limit times the velocity scaling factor, every acceleration within
-its limit times the acceleration scaling factor, at rest at both ends.
+"""Time stamps for a path of joint positions as Noetic's MoveIt gives them: the default
+request adapter ``AddTimeParameterization`` (moveit noetic-devel 7c0343f0,
+moveit_ros/planning/planning_request_adapter_plugins/src/add_time_parameterization.cpp:68,80)
+runs ``IterativeParabolicTimeParameterization`` with its defaults (100 iterations, 0.01 s of
+change per iteration, iterative_time_parameterization.h:50), step for step as
+moveit_core/trajectory_processing/src/iterative_time_parameterization.cpp ("iptp" below):
 
-Each segment first gets the time of the fastest motion along the path its limits allow
-(accelerating from rest and braking to rest at the limits, corners taken slowly enough for
-their change of direction); then, as IPTP does, pass after pass, a waypoint whose
-acceleration (from the parabola through it and its neighbours) exceeds a limit has its two
-segments stretched, until none does.
-Velocities and accelerations of the waypoints are the finite differences. A joint without
-a speed or acceleration limit gets MoveIt's 1 rad/s and 1 rad/s^2. No ROS here.
+- each segment first takes the time its slowest joint needs at its speed limit times the
+  velocity scaling factor (iptp:101-142, applyVelocityConstraints);
+- then, per joint, a forward and a backward pass over the waypoints, repeated while a pass
+  changed something and at most 100 times: a waypoint whose acceleration (the parabola
+  through it and its neighbours; at the first and last waypoint the mirrored neighbour)
+  exceeds the limit times the acceleration scaling factor by more than 0.01 (iptp's
+  ROUNDING_THRESHOLD) has one segment lengthened, the one after it going forward and the one
+  before it going backward, to the time ``findT1``/``findT2`` find by steps of 1 % but by at
+  most 0.01 s per visit (iptp:298-456, 148-184);
+- velocities and accelerations of the waypoints from the finite differences, zero speed at
+  both ends (iptp:188-294, updateTrajectory).
+
+So, as in Noetic, a path is not time-optimal and its accelerations may exceed a limit where
+100 iterations did not suffice; what bounds it is that no segment grows by more than
+0.01 s per visit. A joint without a speed or acceleration limit gets IPTP's 1 rad/s and
+1 rad/s^2 (iptp:43-44). A first waypoint with a known velocity (``start_velocity``, as a
+start state read from joint_states has) starts from it (iptp:277-285, 407-417). No ROS here.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import List, Optional, Sequence
 
 import numpy as np
 
-DEFAULT_VELOCITY = 1.0          # rad/s (m/s): MoveIt's for a joint without a limit
-DEFAULT_ACCELERATION = 1.0      # rad/s^2
-MAX_PASSES = 1000               # stretching passes; each makes progress or ends the loop
-STRETCH = 1.01                  # a stretched segment is this much longer than needed
+DEFAULT_VELOCITY = 1.0          # rad/s (m/s): iptp's DEFAULT_VEL_MAX, a joint without a limit
+DEFAULT_ACCELERATION = 1.0      # rad/s^2: iptp's DEFAULT_ACCEL_MAX
+ROUNDING_THRESHOLD = 0.01       # iptp:45: an acceleration this far beyond its limit is tolerated
+MAX_ITERATIONS = 100            # iterative_time_parameterization.h:50, the adapter's default
+MAX_TIME_CHANGE_PER_IT = 0.01   # s, the same line
+MULT_FACTOR = 1.01              # iptp:151, 170: findT1/findT2's step
 
 
 class TimingError(ValueError):
@@ -39,101 +52,119 @@ class Timed:
 
 def scaling(value: float) -> float:
     """A scaling factor as MoveIt's adapter reads it: 0 (unset) and anything outside
-    (0, 1] mean 1."""
+    (0, 1] mean 1 (iptp:113-122, 327-336)."""
     return float(value) if 0.0 < value <= 1.0 else 1.0
 
 
 def time_path(positions: Sequence[Sequence[float]], max_velocity: Sequence[Optional[float]],
               max_acceleration: Sequence[Optional[float]], velocity_scaling: float = 1.0,
-              acceleration_scaling: float = 1.0) -> Timed:
+              acceleration_scaling: float = 1.0,
+              start_velocity: Optional[Sequence[float]] = None) -> Timed:
     q = np.asarray(positions, dtype=float)
     if q.ndim != 2 or len(q) == 0 or not np.all(np.isfinite(q)):
         raise TimingError("a path needs at least one waypoint of finite positions")
-    velocity = np.array([v if v and v > 0 else DEFAULT_VELOCITY for v in max_velocity])
-    velocity = velocity * scaling(velocity_scaling)
-    acceleration = np.array([a if a and a > 0 else DEFAULT_ACCELERATION
-                             for a in max_acceleration]) * scaling(acceleration_scaling)
+    # the scaling factors scale a joint's own limits, not the defaults (iptp:131-135, 363-367)
+    velocity = np.array([abs(v) * scaling(velocity_scaling) if v else DEFAULT_VELOCITY
+                         for v in max_velocity], dtype=float)
+    acceleration = np.array([abs(a) * scaling(acceleration_scaling) if a
+                             else DEFAULT_ACCELERATION for a in max_acceleration], dtype=float)
+    start = None if start_velocity is None else [float(v) for v in start_velocity]
     count = len(q)
     if count == 1:
         zeros = np.zeros_like(q)
         return Timed(np.zeros(1), q, zeros, zeros.copy())
-    delta = np.diff(q, axis=0)
-    dt = _ramped(delta, velocity, acceleration)
-    for _ in range(MAX_PASSES):
-        stretched = False
-        for i in range(count):
-            before = dt[i - 1] if i > 0 else None
-            after = dt[i] if i < count - 1 else None
-            v_in = delta[i - 1] / before if before else np.zeros(q.shape[1])
-            v_out = delta[i] / after if after else np.zeros(q.shape[1])
-            span = (before or 0.0) + (after or 0.0)
-            needed = np.max(np.abs(v_out - v_in) / acceleration) * 2.0 / span
-            if needed > 1.0 + 1e-9:
-                # accelerations scale as 1/t^2: stretch both neighbours by sqrt of the excess
-                factor = np.sqrt(needed) * STRETCH
-                if before:
-                    dt[i - 1] *= factor
-                if after:
-                    dt[i] *= factor
-                stretched = True
-        if not stretched:
+    # iptp:121-136: each segment as long as its slowest joint needs
+    dt = np.max(np.abs(np.diff(q, axis=0)) / velocity, axis=1).tolist()
+    _apply_acceleration_limits(q.T.tolist(), dt, acceleration.tolist(), start)
+    return _timed(q, np.asarray(dt), start)
+
+
+def _find_time(dq1: float, dq2: float, dt1: float, dt2: float, a_max: float,
+               first: bool, cap: float) -> float:
+    """iptp's findT1 (``first``: dt1 grows) or findT2 (dt2 grows): the segment's time times
+    1.01 until the acceleration is within ``a_max``, and once more (the loop's last step,
+    iptp:156-162, 175-181). The caller keeps min(old + 0.01, this): the steps stop once past ``cap``
+    (that old + 0.01), which changes nothing the caller keeps."""
+    def accel(t1, t2):
+        return 2.0 * (dq2 / t2 - dq1 / t1) / (t1 + t2)
+    a = accel(dt1, dt2)
+    while abs(a) > a_max:
+        a = accel(dt1, dt2)
+        if first:
+            dt1 *= MULT_FACTOR
+        else:
+            dt2 *= MULT_FACTOR
+        if (dt1 if first else dt2) > cap:
             break
+    return dt1 if first else dt2
+
+
+def _apply_acceleration_limits(q: List[List[float]], dt: List[float], a_max: List[float],
+                               start: Optional[List[float]]) -> None:
+    """iptp:298-456 (applyAccelerationConstraints) on ``dt`` in place; ``q`` joint-major."""
+    count = len(q[0])
+    backwards = False
+    for _ in range(MAX_ITERATIONS):
+        updates = 0
+        for j, qj in enumerate(q):
+            limit = a_max[j] + ROUNDING_THRESHOLD
+            for _pass in range(2):
+                for i in range(count - 1):
+                    index = count - 1 - i if backwards else i
+                    if index == 0:
+                        q1, q2, q3 = qj[1], qj[0], qj[1]
+                        dt1 = dt2 = dt[0]
+                    elif index < count - 1:
+                        q1, q2, q3 = qj[index - 1], qj[index], qj[index + 1]
+                        dt1, dt2 = dt[index - 1], dt[index]
+                    else:
+                        q1, q2, q3 = qj[index - 1], qj[index], qj[index - 1]
+                        dt1 = dt2 = dt[index - 1]
+                    if dt1 == 0.0 or dt2 == 0.0:
+                        continue            # iptp:400-405: a = 0
+                    v1 = start[j] if index == 0 and start is not None else (q2 - q1) / dt1
+                    a = 2.0 * ((q3 - q2) / dt2 - v1) / (dt1 + dt2)
+                    if abs(a) <= limit:
+                        continue
+                    # findT1/findT2 take their v1 from the positions, not the start velocity
+                    if not backwards:
+                        dt[index] = min(dt2 + MAX_TIME_CHANGE_PER_IT, _find_time(
+                            q2 - q1, q3 - q2, dt1, dt2, a_max[j], False,
+                            dt2 + MAX_TIME_CHANGE_PER_IT))
+                    else:
+                        dt[index - 1] = min(dt1 + MAX_TIME_CHANGE_PER_IT, _find_time(
+                            q2 - q1, q3 - q2, dt1, dt2, a_max[j], True,
+                            dt1 + MAX_TIME_CHANGE_PER_IT))
+                    updates += 1
+                backwards = not backwards
+        if updates == 0:
+            break
+
+
+def _timed(q: np.ndarray, dt: np.ndarray, start: Optional[List[float]]) -> Timed:
+    """iptp:188-294 (updateTrajectory): times, and each waypoint's velocity (the mean of the
+    segments either side; zero at the ends, whose mirrored neighbour is the one they have)
+    and acceleration."""
+    count = len(q)
     times = np.concatenate([[0.0], np.cumsum(dt)])
     velocities = np.zeros_like(q)
     accelerations = np.zeros_like(q)
-    for i in range(1, count - 1):
-        v_in, v_out = delta[i - 1] / dt[i - 1], delta[i] / dt[i]
-        velocities[i] = (v_in + v_out) / 2.0
-        accelerations[i] = (v_out - v_in) * 2.0 / (dt[i - 1] + dt[i])
-    accelerations[0] = delta[0] / dt[0] * 2.0 / dt[0]
-    accelerations[-1] = -delta[-1] / dt[-1] * 2.0 / dt[-1]
+    for i in range(count):
+        if i == 0:
+            q1, q2, q3, dt1, dt2 = q[1], q[0], q[1], dt[0], dt[0]
+        elif i < count - 1:
+            q1, q2, q3, dt1, dt2 = q[i - 1], q[i], q[i + 1], dt[i - 1], dt[i]
+        else:
+            q1, q2, q3, dt1, dt2 = q[i - 1], q[i], q[i - 1], dt[i - 1], dt[i - 1]
+        if dt1 == 0.0 or dt2 == 0.0:
+            continue
+        if i == 0 and start is not None:
+            v1 = v2 = np.asarray(start)     # iptp:284-286
+        else:
+            v1, v2 = (q2 - q1) / dt1, (q3 - q2) / dt2
+        velocities[i] = (v1 + v2) / 2.0
+        accelerations[i] = 2.0 * (v2 - v1) / (dt1 + dt2)
     return Timed(times, q, velocities, accelerations)
-
-
-def _ramped(delta: np.ndarray, velocity: np.ndarray, acceleration: np.ndarray) -> np.ndarray:
-    """Segment durations of the path at the most speed its limits allow, accelerating and
-    braking at the limits along the path (forward and backward passes over the speed
-    along the path, a corner taken as slowly as its joints' change of direction needs):
-    the start the passes below refine, so that a long path ramps up and down instead of
-    crawling at the speed its first segment may reach from rest."""
-    lengths = np.linalg.norm(delta, axis=1)
-    moving = lengths > 1e-12
-    unit = np.zeros_like(delta)
-    unit[moving] = delta[moving] / lengths[moving, None]
-    with np.errstate(divide="ignore"):
-        top = np.min(np.where(np.abs(unit) > 1e-12, velocity / np.abs(unit), np.inf), axis=1)
-        push = np.min(np.where(np.abs(unit) > 1e-12, acceleration / np.abs(unit), np.inf),
-                      axis=1)
-    count = len(delta) + 1
-    speed = np.full(count, np.inf)
-    speed[0] = speed[-1] = 0.0
-    for i in range(1, count - 1):
-        turn = np.abs(unit[i] - unit[i - 1])
-        reach = min(lengths[i - 1], lengths[i])
-        with np.errstate(divide="ignore"):
-            corner = np.min(np.where(turn > 1e-12, np.sqrt(acceleration * reach / turn), np.inf))
-        speed[i] = min(top[i - 1], top[i], corner)
-    for i in np.flatnonzero(moving):            # accelerating forward
-        speed[i + 1] = min(speed[i + 1], math.sqrt(speed[i] ** 2 + 2 * push[i] * lengths[i]))
-    for i in reversed(np.flatnonzero(moving)):  # braking backward
-        speed[i] = min(speed[i], math.sqrt(speed[i + 1] ** 2 + 2 * push[i] * lengths[i]))
-    dt = np.zeros(len(delta))
-    for i in np.flatnonzero(moving):
-        dt[i] = _segment_time(lengths[i], speed[i], speed[i + 1], top[i], push[i])
-    # and never faster than the slowest joint's full speed over the segment
-    return np.maximum(np.maximum(dt, np.max(np.abs(delta) / velocity, axis=1)), 1e-6)
-
-
-def _segment_time(length: float, start: float, end: float, top: float, push: float) -> float:
-    """The time over ``length`` from speed ``start`` to ``end``, accelerating at ``push``
-    up to at most ``top`` and braking again (a trapezoid, or a triangle when the segment
-    is too short for full speed). The passes above made the end speeds reachable; a
-    segment from rest to rest (a two-point path) is the whole profile."""
-    peak = min(top, math.sqrt(push * length + (start ** 2 + end ** 2) / 2))
-    peak = max(peak, start, end)
-    ramps = (peak ** 2 - start ** 2 + peak ** 2 - end ** 2) / (2 * push)
-    cruise = max(length - ramps, 0.0)
-    return (peak - start) / push + (peak - end) / push + (cruise / peak if peak > 0 else 0.0)
 
 
 def limits_of(model, joints: Sequence[str]):

@@ -51,8 +51,6 @@ ou.setLogLevel(ou.LOG_WARN)
 
 DEFAULT_PLANNING_TIME = 1.0      # s, for a request that allows none (MoveIt's)
 JIGGLE_TRIES = 100               # FixStartStateCollision's max_sampling_attempts
-PREFIX_TOLERANCE = 1e-6          # rad (m): a start moved less than this into its bounds is
-                                 # not prefixed to the path (see _plan)
 GOAL_SHARE = 0.5                 # of the planning time IK goal sampling may take
 MAX_SEED = 2 ** 32 - 1           # OMPL's seeds are unsigned 32-bit; 0 would be its own
 # the found path is checked again this many times more finely than motions were checked
@@ -178,13 +176,13 @@ class OmplPlanner:
                                       "between the states the planner checked", prefix)
                 resolution, path = fine, None
         dense = _interpolate(path, resolution)
-        # the start as given leads the path when FixStartStateBounds moved it, as MoveIt's
-        # adapter prefixes it; not for a start a hair outside its bounds (a simulated finger
-        # 2e-7 m beyond its limit): that point, against the path's direction, left the time
-        # parameterisation crawling (a 3 s gripper motion took 52 s)
+        # the start as given leads the path whenever FixStartStateBounds moved it into its
+        # bounds, by however little (moveit noetic-devel 7c0343f0, moveit_ros/planning/
+        # planning_request_adapter_plugins/src/fix_start_state_bounds.cpp:145-152, 197); the
+        # waypoints carry no velocities (the scene's current state is positions only unless
+        # copy_dynamics is enabled), so IPTP mirrors the first segment
         positions = ([np.array([prefix[j] for j in joints])]
-                     if any(abs(prefix[j] - start[j]) > PREFIX_TOLERANCE for j in joints)
-                     else []) + dense
+                     if any(prefix[j] != start[j] for j in joints) else []) + dense
         velocity, acceleration = limits_of(scene.model, joints)
         timed = time_path(positions, velocity, acceleration,
                           request.max_velocity_scaling_factor,
