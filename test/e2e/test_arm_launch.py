@@ -1,6 +1,7 @@
-"""arm.launch as a user runs it on a screen: with use_fake:=true, Interbotix's MoveIt with
-its rviz and the mover start; reset and step answer from the command line (rosservice, as
-the README shows) and rviz shows the arm."""
+"""arm.launch as a user runs it on a screen: with the homework's use_sim:=true fake:=true,
+Interbotix's MoveIt with its rviz and the mover start; reset and step answer from the
+command line (rosservice, as the README shows) and rviz shows the arm. With use_sim:=false
+(the real arm) the launch ends, naming the driver it needs."""
 import os
 import shutil
 import subprocess
@@ -33,9 +34,20 @@ def test_services_answer_and_rviz_shows_the_arm(screen_env, results_dir, repo):
         assert "val: 1" in step, step
         headless.stable_screenshot(screen_env["DISPLAY"], shot, "RViz", launch)
 
-    headless.run_while_node_lives(["arm_move", "arm.launch", "use_fake:=true"], screen_env,
+    headless.run_while_node_lives(["arm_move", "arm.launch", "use_sim:=true",
+                                   "fake:=true"], screen_env,
                                   log, services_then_picture)
     grey = headless.pixels_near(shot, "rgb(140,140,150)", fuzz="8%")
     assert grey > ROBOT_PIXELS, f"{grey} pixels look like the robot's grey links"
     if os.environ.get("UPDATE_DOC_IMAGES") == "1":
         shutil.copyfile(shot, os.path.join(repo, "arm_move", "doc", "arm_rviz.png"))
+
+
+def test_the_real_arm_stops_naming_its_driver(ros_env, results_dir):
+    done = subprocess.run(["roslaunch", "arm_move", "arm.launch", "use_sim:=false", "rviz:=false"],
+                          env=ros_env, capture_output=True, text=True, timeout=120, check=False)
+    output = done.stdout + done.stderr
+    with open(os.path.join(results_dir, "arm.log"), "w", encoding="utf-8") as log:
+        log.write(output)
+    assert "the real arm's driver (Interbotix's interbotix_xs_sdk" in output, output[-2000:]
+    assert "xs_hardware_interface" in output and "required" in output, output[-2000:]
