@@ -55,6 +55,11 @@ ROS_CMAKE = "my_rb1_ros/CMakeLists.txt"
 ROS_PACKAGE = "my_rb1_ros/package.xml"
 TARGET_LINE = "        target = start + math.radians(degrees)\n"
 MAIN_LINE = "def main() -> None:\n"
+# our rotate service's success answer, and the words other students answer with
+OUR_SUCCESS = ('                    return (f"success: rotated {degrees} degrees (final error "\n'
+               '                            f"{abs(math.degrees(final_error)):.1f} degrees)")\n')
+OWN_WORDS = ('                    return {-90: "Rotation completed",\n'
+             '                            270: "Rotation succesfully done"}.get(degrees, "true")\n')
 
 
 FAULTS: Dict[str, Fault] = {
@@ -104,9 +109,9 @@ FAULTS: Dict[str, Fault] = {
         (Replace(NODE, TARGET_LINE, "        target = start + degrees\n"),),
         nothing_for({"rotate_degrees", "rotate_answers_success"}), ("rotate",)),
     "no_success_message": Fault(
-        "the answer says what was done but not 'success'",
+        "the answer says what the node set out to do, not that it was done",
         (Replace(NODE, '                    return (f"success: rotated {degrees} degrees',
-                 '                    return (f"rotated {degrees} degrees'),),
+                 '                    return (f"rotating by {degrees} degrees'),),
         {"rotate_answers_success": 0.0}, ("rotate",)),
     "cpp_rotate_service": Fault(
         "not a fault: the rotate service in C++ (rotate_service.cpp, built by catkin_make)",
@@ -150,6 +155,10 @@ FAULTS: Dict[str, Fault] = {
 # table's points), the grader's notes naming what differs. Same form as FAULTS.
 ROTATE_BIAS = 1.069   # the overshooting service turns this times the request: -96.2 for -90
 CORRECT_BY_THE_GUIDE: Dict[str, Fault] = {
+    "success_in_own_words": Fault(
+        "success said as students say it: 'Rotation completed' (-90), 'Rotation succesfully "
+        "done' (270, misspelt), 'true' (360)",
+        (Replace(NODE, OUR_SUCCESS, OWN_WORDS),), {}, ("rotate",)),
     "joint_names_differ": Fault(
         "joints named base_link_to_<link> (the guide names links, never joints)",
         tuple(ReplaceAll(URDF, f'"{link}_joint"', f'"base_link_to_{link}"')
@@ -262,7 +271,7 @@ def _radians(items, limit):
 
 
 def _no_success(items, limit):
-    assert "answer 'rotated -90 degrees" in items["rotate_answers_success"]["evidence"]
+    assert "answer 'rotating by -90 degrees" in items["rotate_answers_success"]["evidence"]
 
 
 def _no_build(items, limit):
@@ -315,7 +324,13 @@ def _overshoot(items, limit):
     assert items["rotate_answers_success"]["awarded"] == 1.0
 
 
-EVIDENCE = {"joint_names_differ": _joint_names, "weighs_26kg": _heavier,
+def _own_words(items, limit):
+    evidence = items["rotate_answers_success"]["evidence"]
+    for words in ("Rotation completed", "Rotation succesfully done", "'true'"):
+        assert words in evidence, evidence
+
+
+EVIDENCE = {"joint_names_differ": _joint_names, "success_in_own_words": _own_words, "weighs_26kg": _heavier,
             "casters_tilt_it": _tilted, "starts_paused": _paused,
             "rotate_overshoots": _overshoot,
             "laser_not_upside_down": _laser, "spawned_outside_square": _spawn,

@@ -41,7 +41,8 @@ BATCHES = {
     "build": ((), None, ("does_not_build",)),
     "rotate": (("rotate",), ROTATE_LIMIT,
                ("rotate_by_time", "turn_wraps_at_180", "degrees_as_radians",
-                "rotate_overshoots", "node_not_executable", "node_hangs")),
+                "rotate_overshoots", "node_not_executable", "node_hangs",
+                "success_in_own_words")),
 }
 # Graded by make soak alone (test/soak/test_course_grader_faults_one_at_a_time.py grades
 # every fixture one at a time against the same table), to keep make test within its 15

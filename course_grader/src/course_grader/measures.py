@@ -7,6 +7,8 @@ import math
 from dataclasses import dataclass
 from typing import List, Optional, Sequence, Tuple
 
+from course_grader.answer_words import claims_success
+
 Sample = Tuple[float, float]   # (simulated time s, yaw rad)
 
 
@@ -89,8 +91,7 @@ class Rotation:
         return abs(self.error()) <= tolerance
 
     def says_success(self) -> bool:
-        text = self.answer.lower()
-        return "success" in text and "fail" not in text
+        return claims_success(self.answer)
 
     def answered_when_done(self, lag: float, done_within: float) -> bool:
         """Success claimed once the turn was done: the robot turned within ``done_within``

@@ -19,6 +19,7 @@ import rospy
 from tf import transformations
 
 from course_grader import course as course_file
+from course_grader.answer_words import answer_text
 from course_grader.course import scenario_spec
 from course_grader.probe_tools import (ProbeError, check, publishers_of, robot_description,
                                        subscribers_of, wait_for_simulated_time, wait_until)
@@ -256,8 +257,7 @@ def rotate(course, folder: str = "") -> Dict:
             failures.append(f"rotate {degrees}: no answer within {spec['call_timeout']:g} s")
             answer.update(at=float("inf"), error="no answer")
         response = answer.get("response")
-        text = (getattr(response, "result", None) if response is not None else None)
-        text = str(text if text is not None else (response or answer.get("error", "")))
+        text = answer_text(response) if response is not None else answer.get("error", "")
         after = min(answer["at"], rospy.get_time())
         wait_until(lambda: still(after), limit, f"the robot to stop after rotate {degrees}")
         samples = recorder.since(began)
