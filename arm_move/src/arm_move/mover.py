@@ -153,6 +153,7 @@ class Mover:
         self._cycle: Optional[threading.Thread] = None
         self._stop_cycle = threading.Event()
         self.holding = False
+        self.gripper_open: Optional[bool] = None   # as last sent and done; None: unknown
 
     # --- start-up ------------------------------------------------------------------------
     def start(self) -> None:
@@ -442,9 +443,17 @@ class Mover:
         rospy.loginfo("mover: %s detached at %s", PICK_OBJECT, np.round(p, 3).tolist())
 
     def _move_gripper(self, gripper_open: bool) -> None:
+        """Opens or closes the gripper, unless it already is: closed on the block, the
+        fingers stop short of the closed state, and a plan from where they stopped starts
+        the controller's command there, so the squeeze (the controller's position error)
+        would vanish until the plan closes in again; the block falls out meanwhile."""
+        if self.gripper_open == gripper_open:
+            return
+        self.gripper_open = None
         self.gripper.set_named_target(self.settings.open_state if gripper_open
                                       else self.settings.closed_state)
         self._plan_and_execute(self.gripper, "the gripper")
+        self.gripper_open = gripper_open
 
     # --- planning and execution ----------------------------------------------------------
     def _plan_and_execute(self, group, what: str) -> str:
