@@ -296,6 +296,22 @@ def test_effort_group_controller_turns_the_joint_with_the_torque_it_is_given():
     assert speeds[2] == pytest.approx(-speeds[0], rel=0.05)
 
 
+def test_an_effort_joints_effort_in_joint_states_is_the_force_it_was_given():
+    """DefaultRobotHWSim's readSim reports GetForce(0), the force the last writeSim set
+    (gazebo_ros_pkgs noetic-devel f9e1a46 gazebo_ros_control/src/default_robot_hw_sim.cpp:281,
+    :316), not the joint's friction: 0.01 N m given to the pan joint reads 0.01 (it read
+    pybullet's braking motor, the URDF friction, before)."""
+    world, bus, model = arm("EffortJointInterface")
+    start(bus, "joint_state_controller")
+    start(bus, "pan_effort_group")
+    # small enough to stay below the joint's speed limit, where the effort would be zeroed
+    bus.subscriptions["/arm_bot/pan_effort_group/command"](Float64MultiArray(data=[0.01]))
+    run(world, 0.05)
+    message = bus.last("/arm_bot/joint_states")
+    assert message.effort[message.name.index("pan")] == pytest.approx(0.01)
+    world.close()
+
+
 def test_effort_trajectory_controller_reaches_its_goal_through_pid():
     world, bus, model = arm("EffortJointInterface")
     start(bus, "effort_arm_controller")

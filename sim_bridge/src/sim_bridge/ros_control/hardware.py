@@ -272,7 +272,11 @@ class RobotHardware:
         states = pb.getJointStates(self.body, self._indices, physicsClientId=self.client)
         self.positions = np.array([s[0] for s in states])
         self.velocities = np.array([s[1] for s in states])
-        self.efforts = np.array([s[3] for s in states])
+        # an effort joint's effort is the force its last command applied (readSim's
+        # GetForce(0) after writeSim's SetForce, hw_sim:281, :316): pybullet's applied
+        # torque of a torque-controlled joint is the braking motor of its URDF friction
+        self.efforts = np.array([self.joints[n].command if self.joints[n].interface == "effort"
+                                 else s[3] for s, n in zip(states, self.names)])
 
     def state(self, joint: str):
         i = self.names.index(joint)
