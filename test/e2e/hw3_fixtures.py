@@ -37,6 +37,13 @@ CORRECT_BY_THE_ASSIGNMENT: Dict[str, Fault] = {
         (Replace(LAUNCH, '<arg name="paused" default="false"', '<arg name="paused" default="true"'),
          *NO_FLIP_ARGUMENT, Copy("readme_flip_by_hand.md", "diff_drive/README.md")),
         {}, ("layout", "flip")),
+    "flip_started_by_the_launch": Fault(
+        "no flip argument: ddrive.launch always starts the flip node itself, as its README "
+        "says (roslaunch runs the flip); nothing is to be started by hand",
+        (*NO_FLIP_ARGUMENT,
+         Replace(ROBOT_LAUNCH, '<node if="$(arg flip)" name="flip"', '<node name="flip"'),
+         Copy("readme_flip_by_launch.md", "diff_drive/README.md")),
+        {}, ("flip",)),
     "flip_node_found_by_name": Fault(
         "no flip argument, no command in the README: the node is nodes/flipper",
         (*NO_FLIP_ARGUMENT, Copy("readme_no_commands.md", "diff_drive/README.md"),

@@ -19,7 +19,8 @@ BATCHES = {
                         ("xacro_named_otherwise", "world_models_named_otherwise",
                          "yaml_loaded_the_old_way")),
     "flip": (("layout", "flip"),
-             ("paused_flip_by_hand", "flip_node_found_by_name", "nodes_not_executable")),
+             ("paused_flip_by_hand", "flip_node_found_by_name", "nodes_not_executable",
+              "flip_started_by_the_launch")),
     "arm": (("layout", "arm_test", "step"), ("arm_move_written_otherwise",)),
 }
 RESULTS = os.path.join("test_results", "e2e", "course_grader", "calibration_hw3")
@@ -73,6 +74,9 @@ def test_the_report_says_how_the_submission_was_run(batches):
     assert any("'rosrun diff_drive flip'" in n for n in notes(paused)), notes(paused)
     by_name = flip.items("flip_node_found_by_name")["flips"]
     assert any("'rosrun diff_drive flipper'" in n for n in notes(by_name)), notes(by_name)
+    by_launch = flip.items("flip_started_by_the_launch")["flips"]
+    assert any("ddrive.launch starts diff_drive/flip itself, so nothing was started by hand"
+               in n for n in notes(by_launch)), notes(by_launch)
     world = batches["files_and_world"].items("world_models_named_otherwise")["world_contents"]
     assert "wall_north_1 (model://jersey_barrier)" in world["evidence"], world["evidence"]
 

@@ -24,10 +24,15 @@ PLATFORM_SETUP = os.path.join(REPO, ".ws", "platform", "devel", "setup.bash")
 RERUN_SUFFIX = "-rerun"   # a scenario run again after a platform fault logs in <its logs>-rerun
 
 
+def _launch_path(env: Dict[str, str], package: str, launch_file: str) -> str:
+    """The submission's launch file (empty when its package is not found)."""
+    found = submission.sourced_find(env, package)
+    return os.path.join(found, "launch", launch_file) if found else ""
+
+
 def _declared(env: Dict[str, str], package: str, launch_file: str) -> List[str]:
     """The arguments the submission's launch file declares."""
-    found = submission.sourced_find(env, package)
-    return ros_run.declared_args(os.path.join(found, "launch", launch_file) if found else "")
+    return ros_run.declared_args(_launch_path(env, package, launch_file))
 
 
 def _headless_args(declared: List[str], headless: Dict[str, str]) -> List[str]:
@@ -66,6 +71,15 @@ def plan_command(course: Course, key: str, env: Dict[str, str],
             plan.notes.append(not_passed)
             continue
         hand_package, word = hand
+        # a launch file that starts the part itself needs no second one by hand (two flip
+        # routines fight over cmd_vel)
+        launched = ros_run.launched_nodes(env, _launch_path(env, package, launch_file),
+                                          plan.args) or []
+        own = [kind for pkg, kind in launched if pkg == hand_package and word in kind]
+        if own:
+            plan.notes.append(f"{not_passed}; {launch_file} starts {hand_package}/{own[0]} "
+                              "itself, so nothing was started by hand")
+            continue
         found = submission.sourced_find(env, hand_package)
         node = instructions.node_started_by_hand(
             readmes, hand_package, word,

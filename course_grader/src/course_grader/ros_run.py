@@ -15,7 +15,7 @@ import socket
 import subprocess
 import time
 import xml.etree.ElementTree as ET
-from typing import Dict, List, Optional
+from typing import Dict, List, Optional, Tuple
 
 import rosgraph
 
@@ -121,6 +121,30 @@ def declared_args(launch_file: str) -> List[str]:
     except (ET.ParseError, OSError):
         return []
     return [arg.get("name") for arg in root.findall("arg") if arg.get("value") is None]
+
+
+# roslaunch's own reading of a launch file with arguments: the (package, type) of every
+# node it would start, includes and if/unless resolved; printed as one JSON line
+_LAUNCHED = ("import json, sys, roslaunch.config\n"
+             "config = roslaunch.config.load_config_default([(sys.argv[1], sys.argv[2:])], None)\n"
+             "print(json.dumps([[n.package, n.type] for n in config.nodes]))\n")
+LAUNCH_READ_LIMIT = 60.0    # s (wall) roslaunch may take to read a launch file
+
+
+def launched_nodes(env: Dict[str, str], launch_file: str,
+                   args: List[str]) -> Optional[List[Tuple[str, str]]]:
+    """The (package, type) of each node ``launch_file`` starts with ``args``, as roslaunch
+    reads it in ``env`` (the submission's); None when roslaunch cannot read it."""
+    if not launch_file or not os.path.isfile(launch_file):
+        return None
+    try:
+        done = subprocess.run(["python3", "-c", _LAUNCHED, launch_file, *args], env=env,
+                              capture_output=True, text=True, timeout=LAUNCH_READ_LIMIT,
+                              check=False)
+        return [tuple(node) for node in json.loads(done.stdout.strip().splitlines()[-1])] \
+            if done.returncode == 0 and done.stdout.strip() else None
+    except (OSError, subprocess.TimeoutExpired, ValueError, IndexError):
+        return None
 
 
 class Session:

@@ -56,3 +56,32 @@ def test_an_argument_the_launch_file_does_not_declare_is_not_passed(tmp_path, mo
         '<launch><arg name="flip" default="false"/></launch>')
     plan = grader.plan_command(hw3, "ddrive_flip", {}, [README])
     assert plan.args == ["flip:=true"] and plan.by_hand == [] and plan.notes == []
+
+
+def test_a_part_the_launch_file_starts_itself_is_not_started_again_by_hand(tmp_path,
+                                                                           monkeypatch):
+    """Issue 31: ddrive.launch without a flip argument that starts the flip node itself (its
+    README says roslaunch runs the flip): a second flip node by hand would fight it over
+    cmd_vel. roslaunch's own reading decides, includes and if= resolved."""
+    hw3 = course_file.load("me495_hw3")
+    package = tmp_path / "diff_drive"
+    (package / "launch").mkdir(parents=True)
+    (package / "nodes").mkdir()
+    (package / "nodes" / "flipper").write_text("#!/usr/bin/env python3\n")
+    os.chmod(package / "nodes" / "flipper", 0o755)
+    (package / "launch" / "robot.launch").write_text(
+        '<launch><arg name="drive"/><node if="$(arg drive)" name="f" pkg="diff_drive" '
+        'type="flipper"/></launch>')
+    launch = package / "launch" / "ddrive.launch"
+    include = f'<include file="{package}/launch/robot.launch"><arg name="drive" value="%s"/>' \
+              '</include>'
+    monkeypatch.setattr(grader.submission, "sourced_find", lambda env, name: str(package))
+    env = dict(os.environ)
+    launch.write_text(f'<launch><arg name="paused" default="true"/>{include % "true"}</launch>')
+    plan = grader.plan_command(hw3, "ddrive_flip", env, [README])
+    assert plan.by_hand == []
+    assert "ddrive.launch starts diff_drive/flipper itself" in plan.notes[0]
+    # the same launch file with the node switched off: started by hand, as the README says
+    launch.write_text(f'<launch><arg name="paused" default="true"/>{include % "false"}</launch>')
+    plan = grader.plan_command(hw3, "ddrive_flip", env, [README])
+    assert plan.by_hand == [("diff_drive", "flipper")]
