@@ -38,13 +38,19 @@ def test_readmes_are_read_from_the_folders_given(tmp_path):
     assert instructions.readme_texts([str(tmp_path), "", str(tmp_path / "none")]) == [README]
 
 
-def test_an_argument_the_launch_file_does_not_declare_is_not_passed(tmp_path, monkeypatch):
-    hw3 = course_file.load("me495_hw3")
-    package = tmp_path / "diff_drive"
+def flipper_package(folder):
+    """A diff_drive package in ``folder`` with a runnable nodes/flipper and a launch/ folder."""
+    package = folder / "diff_drive"
     (package / "launch").mkdir(parents=True)
     (package / "nodes").mkdir()
     (package / "nodes" / "flipper").write_text("#!/usr/bin/env python3\n")
     os.chmod(package / "nodes" / "flipper", 0o755)
+    return package
+
+
+def test_an_argument_the_launch_file_does_not_declare_is_not_passed(tmp_path, monkeypatch):
+    hw3 = course_file.load("me495_hw3")
+    package = flipper_package(tmp_path)
     (package / "launch" / "ddrive.launch").write_text(
         '<launch><arg name="paused" default="true"/><arg name="gui" default="true"/></launch>')
     monkeypatch.setattr(grader.submission, "sourced_find", lambda env, name: str(package))
@@ -64,11 +70,7 @@ def test_a_part_the_launch_file_starts_itself_is_not_started_again_by_hand(tmp_p
     README says roslaunch runs the flip): a second flip node by hand would fight it over
     cmd_vel. roslaunch's own reading decides, includes and if= resolved."""
     hw3 = course_file.load("me495_hw3")
-    package = tmp_path / "diff_drive"
-    (package / "launch").mkdir(parents=True)
-    (package / "nodes").mkdir()
-    (package / "nodes" / "flipper").write_text("#!/usr/bin/env python3\n")
-    os.chmod(package / "nodes" / "flipper", 0o755)
+    package = flipper_package(tmp_path)
     (package / "launch" / "robot.launch").write_text(
         '<launch><arg name="drive"/><node if="$(arg drive)" name="f" pkg="diff_drive" '
         'type="flipper"/></launch>')
