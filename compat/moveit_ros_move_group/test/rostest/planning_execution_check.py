@@ -8,6 +8,7 @@ import math
 import unittest
 
 import actionlib
+from actionlib.action_client import CommState
 import numpy as np
 import rospy
 import rostest
@@ -73,11 +74,14 @@ class PlanningExecution(unittest.TestCase):
             zip(m.name, m.position)), queue_size=10)
         cls.buffer = tf2_ros.Buffer()
         cls.listener = tf2_ros.TransformListener(cls.buffer)
-        cls.move = actionlib.SimpleActionClient("/move_group", MoveGroupAction)
-        cls.execute = actionlib.SimpleActionClient("/execute_trajectory", ExecuteTrajectoryAction)
-        cls.pickup = actionlib.SimpleActionClient("/pickup", PickupAction)
+        # ActionClient, not SimpleActionClient: rospy's SimpleActionClient drops the
+        # transitions of a goal refused before send_goal has stored its handle (pickup's
+        # answer comes within a millisecond) and waits for ever; the handle has them
+        cls.move = actionlib.ActionClient("/move_group", MoveGroupAction)
+        cls.execute = actionlib.ActionClient("/execute_trajectory", ExecuteTrajectoryAction)
+        cls.pickup = actionlib.ActionClient("/pickup", PickupAction)
         for client in (cls.move, cls.execute, cls.pickup):
-            assert client.wait_for_server(rospy.Duration(TIMEOUT)), client.action_client.ns
+            assert client.wait_for_server(rospy.Duration(TIMEOUT)), client.ns
         cls.objects = rospy.Publisher("/collision_object", CollisionObject, queue_size=10)
         cls.get_scene = rospy.ServiceProxy("/get_planning_scene", GetPlanningScene)
         cls.apply_scene = rospy.ServiceProxy("/apply_planning_scene", ApplyPlanningScene)
@@ -86,10 +90,10 @@ class PlanningExecution(unittest.TestCase):
         wait_until(lambda: set(ARM) <= set(cls.joints), what="/joint_states")
 
     def run_goal(self, goal, client=None):
-        client = client or self.move
-        client.send_goal(goal)
-        self.assertTrue(client.wait_for_result(rospy.Duration(TIMEOUT)))
-        return client.get_result()
+        """The goal's result once it is done; its handle is ``self.handle``."""
+        self.handle = (client or self.move).send_goal(goal)
+        wait_until(lambda: self.handle.get_comm_state() == CommState.DONE, what="the result")
+        return self.handle.get_result()
 
     def arm(self):
         return [self.joints[j] for j in ARM]
@@ -161,10 +165,10 @@ class PlanningExecution(unittest.TestCase):
         self.assertEqual(result.error_code.val, Codes.CONTROL_FAILED)
 
     def test_4_pick_and_place_are_refused_saying_so(self):
-        self.pickup.send_goal(PickupGoal(target_name="crate", group_name="interbotix_arm"))
-        self.assertTrue(self.pickup.wait_for_result(rospy.Duration(TIMEOUT)))
-        self.assertEqual(self.pickup.get_result().error_code.val, Codes.FAILURE)
-        self.assertIn("not provided", self.pickup.get_goal_status_text())
+        result = self.run_goal(PickupGoal(target_name="crate", group_name="interbotix_arm"),
+                               self.pickup)
+        self.assertEqual(result.error_code.val, Codes.FAILURE)
+        self.assertIn("not provided", self.handle.get_goal_status_text())
 
     def test_5_a_cartesian_path_and_state_validity(self):
         start = self.buffer.lookup_transform("world", TIP, rospy.Time(0)).transform.translation
