@@ -35,6 +35,7 @@ ROTATE_LIMIT = 60.0
 BATCHES = {
     "display": (("display",), None,
                 ("laser_not_upside_down", "wheels_misplaced", "joint_names_differ",
+                 "links_named_otherwise",
                  "links_in_other_order", "xacro_description", "weighs_26kg")),
     "spawn": (("spawn", "drive"), None,
               ("spawned_outside_square", "casters_tilt_it", "starts_paused")),

@@ -28,6 +28,7 @@ from course_grader import screenshot
 from course_grader.probe_tools import (ProbeError, check, publishers_of, robot_description,
                                        wait_until)
 from course_grader.ros_run import SESSION_TAG
+from course_grader.urdf_checks import part_link
 from urdf_tools.kinematics import link_transform
 
 
@@ -170,7 +171,8 @@ def _signal_all(pids: Dict[str, int], number: int) -> None:
 
 def _wheels(course, model, states, buffer):
     """The wheel item's checks and notes."""
-    wheels = [w for w in course.urdf["wheels"]["links"] if w in model.links]
+    wheels = [link for link in (part_link(model, course.urdf, w)
+                                for w in course.urdf["wheels"]["links"]) if link is not None]
     joints = [model.parent_joint(w) for w in wheels]
     joints = [j for j in joints if j is not None and j.movable]
     if not joints:

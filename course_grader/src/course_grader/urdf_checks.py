@@ -62,23 +62,48 @@ def _offset(model: RobotModel, parent: str, link: str) -> Optional[np.ndarray]:
         return None
 
 
+def _places(spec: Dict) -> Dict[str, List[float]]:
+    """Each part the guide places (by the name it gives it) and its place from the body."""
+    return {**spec["positions"], spec["laser"]["link"]: spec["laser"]["xyz"]}
+
+
+def part_link(model: RobotModel, spec: Dict, part: str) -> Optional[str]:
+    """The link that is the guide's ``part`` (a wheel, a caster, the laser): the link of the
+    guide's name, else the link at the guide's place for it. The guide lists places, not
+    names: a right wheel named ``wheel_r`` where the guide puts the right wheel is it."""
+    if part in model.links:
+        return part
+    body, xyz = spec["body"]["link"], _places(spec).get(part)
+    if xyz is None or body not in model.links:
+        return None
+    for link in sorted(model.links):
+        transform = _offset(model, body, link) if link != body else None
+        if transform is not None and _close(transform[:3, 3], xyz, spec["tolerance"]):
+            return link
+    return None
+
+
 def placements(model: RobotModel, spec: Dict) -> List[Check]:
-    """Wheels, casters and laser where the guide puts them (from base_link), the laser
-    rolled upside down, base_link the right height above base_footprint."""
+    """Wheels, casters and laser where the guide puts them (from base_link), whatever their
+    names (``part_link``), the laser rolled upside down, base_link the right height above
+    base_footprint."""
     tolerance = spec["tolerance"]
     checks = []
     body = spec["body"]["link"]
-    wanted: List[Tuple[str, List[float]]] = list(spec["positions"].items())
-    wanted.append((spec["laser"]["link"], spec["laser"]["xyz"]))
-    for link, xyz in wanted:
-        transform = _offset(model, body, link) if link in model.links else None
+    for part, xyz in _places(spec).items():
+        link = part_link(model, spec, part)
+        transform = _offset(model, body, link) if link is not None else None
         if transform is None:
-            checks.append(Check(f"{link} position", False, f"{link}: not below {body}"))
+            checks.append(Check(f"{part} position", False,
+                                f"{part}: no link named so, and none at the guide's place "
+                                f"{_fmt(xyz)} m from {body}"))
             continue
         at = transform[:3, 3]
-        checks.append(Check(f"{link} position", _close(at, xyz, tolerance),
-                            f"{link} at {_fmt(at)} m (guide {_fmt(xyz)})"))
-    laser = _offset(model, body, spec["laser"]["link"]) if spec["laser"]["link"] in model.links else None
+        named = part if link == part else f"{part} (link '{link}')"
+        checks.append(Check(f"{part} position", _close(at, xyz, tolerance),
+                            f"{named} at {_fmt(at)} m (guide {_fmt(xyz)})"))
+    laser_link = part_link(model, spec, spec["laser"]["link"])
+    laser = _offset(model, body, laser_link) if laser_link is not None else None
     if laser is not None:
         roll = math.degrees(abs(matrix_rpy(laser[:3, :3])[0]))
         upside_down = abs(laser[2, 2] + 1.0) < tolerance   # the laser's z points down
@@ -168,7 +193,8 @@ def supporting(model: RobotModel, spec: Dict) -> List[Check]:
 def wheel_joints(model: RobotModel, spec: Dict) -> Check:
     """The wheels' joints turn (continuous or revolute)."""
     kinds = {}
-    for wheel in spec["wheels"]["links"]:
+    for part in spec["wheels"]["links"]:
+        wheel = part_link(model, spec, part) or part
         joint = model.parent_joint(wheel) if wheel in model.links else None
         kinds[wheel] = (joint.name, joint.type) if joint else (None, "missing")
     ok = all(kind in ("continuous", "revolute") for _, kind in kinds.values())
