@@ -103,12 +103,17 @@ def test_launch_processes_are_the_launch_and_everything_under_it():
     stranger = subprocess.Popen(["sleep", "62"])
     try:
         launch = headless.Launch(tree, os.devnull)
+
+        def sleeps(found):
+            return sorted(c for c in found.values() if c.startswith("sleep"))
+
+        # until both children have exec'd sleep: a child forked but not yet exec'd still
+        # reads "bash -c ..." (four processes with one sleep failed a fresh-clone run)
         commands = headless.wait_until(
-            lambda: (lambda found: found if len(found) == 4 else None)(
-                headless.launch_processes(launch)), 10, "the tree to start")
+            lambda: (lambda found: found if sleeps(found) == ["sleep 60", "sleep 61"]
+                     else None)(headless.launch_processes(launch)), 10, "the tree to start")
         assert tree.pid in commands and stranger.pid not in commands
-        assert sorted(c for c in commands.values() if c.startswith("sleep")) == [
-            "sleep 60", "sleep 61"]
+        assert len(commands) == 4, commands    # bash, its subshell, the two sleeps
     finally:
         os.killpg(tree.pid, 9)
         stranger.kill()
