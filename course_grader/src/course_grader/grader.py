@@ -30,11 +30,6 @@ def _launch_path(env: Dict[str, str], package: str, launch_file: str) -> str:
     return os.path.join(found, "launch", launch_file) if found else ""
 
 
-def _declared(env: Dict[str, str], package: str, launch_file: str) -> List[str]:
-    """The arguments the submission's launch file declares."""
-    return ros_run.declared_args(_launch_path(env, package, launch_file))
-
-
 def _headless_args(declared: List[str], headless: Dict[str, str]) -> List[str]:
     """The course's headless arguments (gui:=false) that the launch file declares
     (headless either way: no DISPLAY)."""
@@ -59,7 +54,8 @@ def plan_command(course: Course, key: str, env: Dict[str, str],
     ``flip:=true`` goes to a launch file with a ``flip`` argument; otherwise the part it
     starts is started by hand (course ``by_hand``), as the submission's README says."""
     package, launch_file = course.commands[key]
-    plan = CommandPlan([], [], [], _declared(env, package, launch_file))
+    path = _launch_path(env, package, launch_file)
+    plan = CommandPlan([], [], [], ros_run.declared_args(path))
     for arg in course.command_args.get(key, []):
         name = arg.split(":=")[0]
         if name in plan.declared:
@@ -73,8 +69,7 @@ def plan_command(course: Course, key: str, env: Dict[str, str],
         hand_package, word = hand
         # a launch file that starts the part itself needs no second one by hand (two flip
         # routines fight over cmd_vel)
-        launched = ros_run.launched_nodes(env, _launch_path(env, package, launch_file),
-                                          plan.args) or []
+        launched = ros_run.launched_nodes(env, path, plan.args) or []
         own = [kind for pkg, kind in launched if pkg == hand_package and word in kind]
         if own:
             plan.notes.append(f"{not_passed}; {launch_file} starts {hand_package}/{own[0]} "

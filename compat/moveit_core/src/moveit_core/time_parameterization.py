@@ -79,14 +79,15 @@ def time_path(positions: Sequence[Sequence[float]], max_velocity: Sequence[Optio
     return _timed(q, np.asarray(dt), start)
 
 
-def _find_time(dq1: float, dq2: float, dt1: float, dt2: float, a_max: float,
-               first: bool, cap: float) -> float:
-    """iptp's findT1 (``first``: dt1 grows) or findT2 (dt2 grows): the segment's time times
-    1.01 until the acceleration is within ``a_max``, and once more (the loop's last step,
-    iptp:156-162, 175-181). The caller keeps min(old + 0.01, this): the steps stop once past ``cap``
-    (that old + 0.01), which changes nothing the caller keeps."""
+def _visit_time(dq1: float, dq2: float, dt1: float, dt2: float, a_max: float,
+                first: bool) -> float:
+    """The segment's new time at one visit: iptp's findT1 (``first``: dt1 grows) or findT2
+    (dt2 grows), the time times 1.01 until the acceleration is within ``a_max``, and once
+    more (the loop's last step, iptp:156-162, 175-181), kept to at most 0.01 s more than it
+    was (iptp:426, :431). The steps stop once past that, which changes nothing kept."""
     def accel(t1, t2):
         return 2.0 * (dq2 / t2 - dq1 / t1) / (t1 + t2)
+    cap = (dt1 if first else dt2) + MAX_TIME_CHANGE_PER_IT
     a = accel(dt1, dt2)
     while abs(a) > a_max:
         a = accel(dt1, dt2)
@@ -96,7 +97,7 @@ def _find_time(dq1: float, dq2: float, dt1: float, dt2: float, a_max: float,
             dt2 *= MULT_FACTOR
         if (dt1 if first else dt2) > cap:
             break
-    return dt1 if first else dt2
+    return min(cap, dt1 if first else dt2)
 
 
 def _apply_acceleration_limits(q: List[List[float]], dt: List[float], a_max: List[float],
@@ -127,14 +128,10 @@ def _apply_acceleration_limits(q: List[List[float]], dt: List[float], a_max: Lis
                     if abs(a) <= limit:
                         continue
                     # findT1/findT2 take their v1 from the positions, not the start velocity
-                    if not backwards:
-                        dt[index] = min(dt2 + MAX_TIME_CHANGE_PER_IT, _find_time(
-                            q2 - q1, q3 - q2, dt1, dt2, a_max[j], False,
-                            dt2 + MAX_TIME_CHANGE_PER_IT))
+                    if backwards:
+                        dt[index - 1] = _visit_time(q2 - q1, q3 - q2, dt1, dt2, a_max[j], True)
                     else:
-                        dt[index - 1] = min(dt1 + MAX_TIME_CHANGE_PER_IT, _find_time(
-                            q2 - q1, q3 - q2, dt1, dt2, a_max[j], True,
-                            dt1 + MAX_TIME_CHANGE_PER_IT))
+                        dt[index] = _visit_time(q2 - q1, q3 - q2, dt1, dt2, a_max[j], False)
                     updates += 1
                 backwards = not backwards
         if updates == 0:

@@ -275,8 +275,8 @@ class RobotHardware:
         # an effort joint's effort is the force its last command applied (readSim's
         # GetForce(0) after writeSim's SetForce, hw_sim:281, :316): pybullet's applied
         # torque of a torque-controlled joint is the braking motor of its URDF friction
-        self.efforts = np.array([self.joints[n].command if self.joints[n].interface == "effort"
-                                 else s[3] for s, n in zip(states, self.names)])
+        self.efforts = np.array([h.command if h.interface == "effort" else s[3]
+                                 for s, h in zip(states, self.joints.values())])
 
     def state(self, joint: str):
         i = self.names.index(joint)
