@@ -90,6 +90,9 @@ class Fault:
     scores: Dict[str, float]   # item id -> points it must get; items not named: full marks
     scenarios: Tuple[str, ...]
     scenario_limit: Optional[float] = None
+    # the platform's fault, not the student's: every item graded is marked "platform" (its
+    # points, 0, left out of the possible) and the grade is "incomplete"
+    platform: bool = False
 
     def expected(self, items) -> Dict[str, float]:
         """Points per item of ``items`` (course Items) this fault must get."""

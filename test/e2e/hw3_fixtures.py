@@ -99,6 +99,13 @@ CORRECT_BY_THE_ASSIGNMENT: Dict[str, Fault] = {
              "src/arm_move/scene.py", "config/mover.yaml", "config/scene.yaml",
              "worlds/arm_box.world"))),
         {}, ("layout", "arm_test", "step")),
+    "arm_readme_says_use_fake": Fault(
+        "arm.launch runs the real arm by default (use_sim false); its README says "
+        "roslaunch arm_move arm.launch use_fake:=true for the simulation",
+        (Replace("arm_move/launch/arm.launch", '<arg name="use_sim" default="true"',
+                 '<arg name="use_sim" default="false"'),
+         Copy("readme_arm_use_fake.md", "arm_move/README.md")),
+        {}, ("step",)),
 }
 
 

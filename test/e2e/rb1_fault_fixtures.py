@@ -96,6 +96,12 @@ FAULTS: Dict[str, Fault] = {
                        'queue_size=10)\n', ""),
          Insert(NODE, MAIN_LINE, "rotate_by_the_clock.py.in")),
         {"rotate_uses_odom": 0.0}, ("rotate",)),
+    "timed_with_odom_subscriber": Fault(
+        "subscribes to /odom but turns for the time the angle takes at its top speed",
+        (Insert(NODE, MAIN_LINE, "rotate_by_the_clock.py.in"),),
+        # its turns of the robot as it is are right (rotate_degrees in full); geared down
+        # it stops halfway, by the clock: the odometry point is lost
+        {"rotate_uses_odom": 0.0}, ("rotate",)),
     "answers_before_turning": Fault(
         "answers success at once and does not turn",
         (Replace(NODE, "            return self._turn_by(degrees, start, watch)\n",
@@ -117,6 +123,12 @@ FAULTS: Dict[str, Fault] = {
         (Replace(NODE, '                    return (f"success: rotated {degrees} degrees',
                  '                    return (f"rotating by {degrees} degrees'),),
         {"rotate_answers_success": 0.0}, ("rotate",)),
+    "needs_turtlesim": Fault(
+        "not the student's fault: my_rb1_ros finds turtlesim (a ROS package the student's "
+        "machine has, the platform not): the build stops at find_package",
+        (Replace(ROS_CMAKE, "find_package(catkin REQUIRED COMPONENTS message_generation)",
+                 "find_package(catkin REQUIRED COMPONENTS message_generation turtlesim)"),),
+        nothing_for(ALL_ITEMS), (), platform=True),
     "cpp_rotate_service": Fault(
         "not a fault: the rotate service in C++ (rotate_service.cpp, built by catkin_make)",
         (Copy("rotate_service.cpp", "my_rb1_ros/src/rotate_service.cpp"),
@@ -272,6 +284,14 @@ def _by_time(items, limit):
     assert "is not among the subscribers of /odom" in items["rotate_uses_odom"]["evidence"]
 
 
+def _timed(items, limit):
+    item = items["rotate_uses_odom"]
+    assert "is among the subscribers of /odom" in item["evidence"], item
+    assert "turns by the clock" in item["evidence"], item
+    turned = re.search(r"geared down 2 times: asked -45, turned (\S+) in", item["evidence"])
+    assert turned and float(turned.group(1)) == pytest.approx(-22.5, abs=4.0), item
+
+
 def _early(items, limit):
     text = items["rotate_degrees"]["evidence"]
     assert "turned +0.0" in text or "turned -0.0" in text, text
@@ -296,6 +316,13 @@ def _no_build(items, limit):
         assert item["awarded"] == 0
         assert "catkin_make failed" in item["evidence"], item
         assert "Cannot locate message [in32]" in item["evidence"], item
+
+
+def _lacks_turtlesim(items, limit):
+    for item in items.values():
+        assert item["mark"] == "platform", item
+        assert "the grading platform has no package 'turtlesim'" in item["platform"], item
+        assert "ros-noetic-turtlesim" in item["platform"], item
 
 
 def _hangs(items, limit):
@@ -352,9 +379,11 @@ EVIDENCE = {"links_named_otherwise": _renamed, "joint_names_differ": _joint_name
             "rotate_overshoots": _overshoot,
             "laser_not_upside_down": _laser, "spawned_outside_square": _spawn,
             "wheels_misplaced": _wheels, "mass_not_25kg": _mass, "rotate_by_time": _by_time,
+            "timed_with_odom_subscriber": _timed,
             "answers_before_turning": _early, "turn_wraps_at_180": _wraps,
             "degrees_as_radians": _radians, "no_success_message": _no_success,
-            "does_not_build": _no_build, "node_hangs": _hangs}
+            "does_not_build": _no_build, "node_hangs": _hangs,
+            "needs_turtlesim": _lacks_turtlesim}
 
 
 def check_evidence(name: str, items: Dict[str, dict], scenario_limit: Optional[float]) -> None:

@@ -52,6 +52,9 @@ def test_our_solution_gets_full_marks(graded_solution):
     assert any(note.startswith("the course's warehouse") and note.endswith("is loaded")
                for note in items["spawn_in_start_square"]["notes"]), items
     assert "grade: report written:" in stdout
+    # odometry use judged by behaviour: the robot geared down still turned the angle asked
+    odometry = items["rotate_uses_odom"]
+    assert "turns by odometry" in odometry["evidence"] and not odometry["mark"], odometry
 
 
 def test_build_is_overlaid_on_the_platform_only(graded_solution, repo):

@@ -21,7 +21,8 @@ BATCHES = {
     "flip": (("layout", "flip"),
              ("paused_flip_by_hand", "flip_node_found_by_name", "nodes_not_executable",
               "flip_started_by_the_launch")),
-    "arm": (("layout", "arm_test", "step"), ("arm_move_written_otherwise",)),
+    "arm": (("layout", "arm_test", "step"), ("arm_move_written_otherwise",
+                                              "arm_readme_says_use_fake")),
 }
 RESULTS = os.path.join("test_results", "e2e", "course_grader", "calibration_hw3")
 
@@ -77,6 +78,9 @@ def test_the_report_says_how_the_submission_was_run(batches):
     by_launch = flip.items("flip_started_by_the_launch")["flips"]
     assert any("ddrive.launch starts diff_drive/flip itself, so nothing was started by hand"
                in n for n in notes(by_launch)), notes(by_launch)
+    fake = batches["arm"].items("arm_readme_says_use_fake")["step_floor_error"]
+    assert any("roslaunch arm_move arm.launch use_fake:=true" in n for n in notes(fake)), \
+        notes(fake)
     world = batches["files_and_world"].items("world_models_named_otherwise")["world_contents"]
     assert "wall_north_1 (model://jersey_barrier)" in world["evidence"], world["evidence"]
 

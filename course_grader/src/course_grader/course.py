@@ -40,7 +40,8 @@ class ScenarioSpec:
     """How one scenario runs: its commands (keys of ``commands``) in order, a topic per
     command that shows it is up before the next is typed, and ``module:function`` of the
     probe (run against the scenario's master) or of the runner (no simulation: files,
-    builds). ``display``: a virtual screen is started first."""
+    builds). ``display``: the scenario grades windows (rviz, the sliders): its commands run
+    as typed, without the headless arguments (every scenario has a virtual screen)."""
 
     commands: Tuple[str, ...] = ()
     ready: Dict[str, str] = field(default_factory=dict)
@@ -95,6 +96,9 @@ class Course:
     # an argument of a command that a submission's launch file may not declare -> (package,
     # a word of the node's name): the node that starts that part by hand instead
     by_hand: Dict[str, Tuple[str, str]] = field(default_factory=dict)
+    # arguments that select the real robot ("use_actual:=true"): a README's command line
+    # with one of them is not how the grader runs the submission (it has no robot)
+    real_robot_args: List[str] = field(default_factory=list)
 
     @property
     def total_points(self) -> float:
@@ -167,7 +171,8 @@ def parse(path: str) -> Course:
                         report=_report_settings(data.get("report", {})),
                         long_scenarios=[str(s) for s in data.get("long_scenarios", [])],
                         by_hand={str(k): (str(v[0]), str(v[1]))
-                                 for k, v in data.get("by_hand", {}).items()})
+                                 for k, v in data.get("by_hand", {}).items()},
+                        real_robot_args=[str(a) for a in data.get("real_robot_args", [])])
     except (KeyError, TypeError, ValueError, IndexError) as error:
         raise CourseError(f"{path}: malformed course file ({type(error).__name__}: {error})") \
             from error

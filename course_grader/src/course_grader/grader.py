@@ -9,7 +9,7 @@ import tempfile
 import time
 import traceback
 from concurrent.futures import ThreadPoolExecutor
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable, Dict, List, Optional, Tuple
 
 from course_grader import (instructions, layout_checks, platform_faults, plots, ros_run,
@@ -40,12 +40,23 @@ def _headless_args(declared: List[str], headless: Dict[str, str]) -> List[str]:
 class CommandPlan:
     """A guide's command as it runs for this submission: the arguments its launch file
     declares (``declared``), the guide's that it passes, and for each it does not, the node
-    that starts that part by hand (or none); what was done, in words for the report."""
+    that starts that part by hand (or none); the arguments its README types beyond the
+    guide's (``readme_args``, those the launch file declares); what was done, in words for
+    the report."""
 
     args: List[str]
     by_hand: List[Tuple[str, str]]     # (package, node)
     notes: List[str]
     declared: List[str]
+    readme_args: List[str] = field(default_factory=list)
+
+    def command_line(self, headless: List[str]) -> List[str]:
+        """What follows the launch file: the headless arguments (a README's ``gui:=true``
+        does not open a window where the scenario has no screen), the README's, the
+        guide's last (roslaunch takes an argument's last value)."""
+        names = {arg.split(":=")[0] for arg in headless}
+        return headless + [a for a in self.readme_args if a.split(":=")[0] not in names] \
+            + self.args
 
 
 def plan_command(course: Course, key: str, env: Dict[str, str],
@@ -56,6 +67,12 @@ def plan_command(course: Course, key: str, env: Dict[str, str],
     package, launch_file = course.commands[key]
     path = _launch_path(env, package, launch_file)
     plan = CommandPlan([], [], [], ros_run.declared_args(path))
+    typed = instructions.readme_args(readmes, package, launch_file,
+                                     course.command_args.get(key, []), course.real_robot_args)
+    plan.readme_args = [arg for arg in typed if arg.split(":=")[0] in plan.declared]
+    if plan.readme_args:
+        plan.notes.append(f"run with the arguments the README types: roslaunch {package} "
+                          f"{launch_file} {' '.join(plan.readme_args)}")
     for arg in course.command_args.get(key, []):
         name = arg.split(":=")[0]
         if name in plan.declared:
@@ -69,7 +86,7 @@ def plan_command(course: Course, key: str, env: Dict[str, str],
         hand_package, word = hand
         # a launch file that starts the part itself needs no second one by hand (two flip
         # routines fight over cmd_vel)
-        launched = ros_run.launched_nodes(env, path, plan.args) or []
+        launched = ros_run.launched_nodes(env, path, plan.readme_args + plan.args) or []
         own = [kind for pkg, kind in launched if pkg == hand_package and word in kind]
         if own:
             plan.notes.append(f"{not_passed}; {launch_file} starts {hand_package}/{own[0]} "
@@ -139,18 +156,20 @@ def scenario_run(course: Course, scenario: str, env: Dict[str, str],
     try:
         with session:
             session.start_master()
-            if spec.display:
-                session.start_display()
+            # every scenario has a screen, as the student's machine has: a launch file
+            # that opens rviz or a GUI whatever its arguments is not failed for want of one
+            session.start_display()
             for key in spec.commands:
                 package, launch_file = course.commands[key]
                 names.append(key)
-                # under a screen the command runs as typed: its windows (rviz, the sliders)
-                # are what the scenario grades and pictures
+                # a scenario that grades windows (rviz, the sliders) and pictures them runs
+                # the command as typed; the others with the headless arguments the launch
+                # file declares (gui:=false), as a student on a slow machine would
                 plan = plan_command(course, key, env, list(readmes))
                 headless = [] if spec.display else \
                     _headless_args(plan.declared, course.headless_args)
                 said += plan.notes
-                session.launch(key, package, launch_file, headless + plan.args)
+                session.launch(key, package, launch_file, plan.command_line(headless))
                 for hand_package, node in plan.by_hand:
                     names.append(f"{key}_{node}")
                     session.rosrun(names[-1], hand_package, node)
@@ -362,6 +381,11 @@ def _grade_in(course, path, out, platform_setup, progress, scenarios, workspace,
     if not built.ok:
         report.results = [failed_item(item, built.summary, built.log_tail)
                           for item in course.items if item.scenario in wanted]
+        # a package the platform lacks is not the student's loss: the items are marked
+        # "platform" (left out of the points possible) and the report says what to install
+        lacks = platform_faults.build_lacks(built.not_found, staged.found)
+        for result in report.results:
+            result.platform = lacks or ""
         report.seconds = time.monotonic() - started
         return report
     env = submission.sourced(os.path.join(workspace, "devel", "setup.bash"),

@@ -1,8 +1,9 @@
 """What a submission's own README tells its user to type, so that the grader runs the
 submission as its author says and as the assignment tells students: the ``rosrun`` and
-``roslaunch`` lines of its READMEs (in code blocks or inline), and, where the guide's
-command passes an argument the submission's launch file does not declare (``flip:=true``),
-the node that starts that part by hand instead. No ROS here."""
+``roslaunch`` lines of its READMEs (in code blocks or inline), the arguments they type
+after the guide's launch file (``use_fake:=true``), and, where the guide's command passes
+an argument the submission's launch file does not declare (``flip:=true``), the node that
+starts that part by hand instead. No ROS here."""
 from __future__ import annotations
 
 import os
@@ -43,6 +44,38 @@ def commands(texts: Iterable[str]) -> List[List[str]]:
             if len(words) >= 3:
                 found.append(words)
     return found
+
+
+def _name(arg: str) -> str:
+    return arg.split(":=")[0]
+
+
+def readme_args(texts: Iterable[str], package: str, launch_file: str,
+                guide_args: Iterable[str], real_robot_args: Iterable[str] = ()) -> List[str]:
+    """The arguments a README types after ``roslaunch package launch_file`` beyond the
+    guide's own (``guide_args``), so that the launch file runs as its author runs it
+    (``use_fake:=true``). The README's lines for that launch file are read in order,
+    passing over those that select the real robot (``real_robot_args``) or set one of the
+    guide's arguments otherwise; those that type all the guide's arguments come first.
+    Empty when the README runs it with the guide's arguments alone (a plain line among
+    others, ``display.launch`` beside ``display.launch gui:=false``) or not at all."""
+    guide = list(guide_args)
+    guide_values = {_name(a): a for a in guide}
+    real = set(real_robot_args)
+    lines = []
+    for words in commands(texts):
+        if words[:3] != ["roslaunch", package, launch_file]:
+            continue
+        args = [w for w in words[3:] if ":=" in w]
+        if real & set(args) or any(_name(a) in guide_values and a != guide_values[_name(a)]
+                                   for a in args):
+            continue
+        lines.append(args)
+    preferred = [args for args in lines if set(guide) <= set(args)] or lines
+    extras = [[a for a in args if _name(a) not in guide_values] for args in preferred]
+    if not extras or any(not e for e in extras):
+        return []
+    return extras[0]
 
 
 def node_started_by_hand(texts: Iterable[str], package: str, word: str,

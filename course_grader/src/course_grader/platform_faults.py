@@ -1,7 +1,8 @@
 """Faults of the grading platform, told from the submission's: a scenario whose logs hold a
 Python traceback raised in the platform's own code (the simulator, the compat packages, the
-grader), a launch that stops at a package the platform lacks (``Resource not found`` of a
-package the submission does not hold), or a program of the platform (rviz, the sliders, the
+grader), a build or a launch that stops at a package the platform lacks (CMake's "Could not
+find a package configuration file", roslaunch's ``Resource not found``, of a package the
+submission does not hold), or a program of the platform (rviz, the sliders, the
 simulator: its command under /usr or the platform's folders) killed by a signal, as a
 crash or the kernel's out-of-memory killer does. Such a scenario's lost points are not the student's:
 the items are marked "platform", left out of the points possible, and the grade is
@@ -91,6 +92,21 @@ def traceback_in_platform(lines: List[str]) -> Optional[str]:
             where = os.path.relpath(os.path.realpath(last_frame[0]), REPO)
             return f"{where}:{last_frame[1]}: {exception}"
     return None
+
+
+def build_lacks(not_found: Iterable[str], submission_packages: Iterable[str]) -> Optional[str]:
+    """Why a build that stopped at find_package failed for the platform: the packages it
+    did not find that the submission does not hold itself (a ROS package the student's
+    machine has, turtlesim say), with what to install; None when there are none."""
+    absent = [name for name in not_found if name not in set(submission_packages)]
+    if not absent:
+        return None
+    names = ", ".join(f"'{name}'" for name in absent)
+    debs = " ".join(f"ros-noetic-{name.replace('_', '-')}" for name in absent)
+    return (f"the grading platform has no package {names}, which the submission's build "
+            f"finds (catkin_make.log: Could not find a package configuration file provided "
+            f"by \"{absent[0]}\"): install it where the grader runs (on ROS Noetic: {debs}) "
+            "and grade again")
 
 
 def find(log_dir: str, submission_packages: Iterable[str]) -> Optional[str]:

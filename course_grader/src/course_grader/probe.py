@@ -216,6 +216,54 @@ def scan(course, folder: str = "") -> Dict:
         + (f", nearest {min(valid):.2f} m" if valid else ""))]}}
 
 
+class RotateCaller:
+    """Asks /rotate_robot for turns and measures each in ground truth: the robot still
+    before the request, the call bounded by ``call_timeout``, the robot still again after
+    the answer."""
+
+    def __init__(self, spec: Dict, recorder: ModelRecorder, proxy, limit: float):
+        self.spec, self.recorder, self.proxy, self.limit = spec, recorder, proxy, limit
+
+    def still(self, since: float) -> bool:
+        return is_still(self.recorder.since(since), self.spec["still_window"],
+                        self.spec["still_speed"])
+
+    def ask(self, degrees: float) -> Tuple[Rotation, Dict, float, bool]:
+        """(the turn, its true yaw samples in degrees for the plot, its duration from the
+        request until the robot stopped in simulated s, whether the call went unanswered)."""
+        spec, recorder = self.spec, self.recorder
+        now = rospy.get_time()
+        wait_until(lambda: self.still(now), self.limit, "the robot to be still before the request")
+        began, yaw0 = recorder.latest()
+        answer: Dict = {}
+
+        def call():
+            try:
+                answer["response"] = self.proxy(degrees=int(degrees))
+            except Exception as error:  # pylint: disable=broad-except
+                answer["error"] = f"{type(error).__name__}: {error}"
+            answer["at"] = rospy.get_time()
+        worker = threading.Thread(target=call, daemon=True)
+        worker.start()
+        worker.join(spec["call_timeout"])
+        hung = "at" not in answer
+        if hung:
+            answer.update(at=float("inf"), error="no answer")
+        response = answer.get("response")
+        text = answer_text(response) if response is not None else answer.get("error", "")
+        after = min(answer["at"], rospy.get_time())
+        wait_until(lambda: self.still(after), self.limit, f"the robot to stop after rotate {degrees}")
+        samples = recorder.since(began)
+        plotted = {"requested": float(degrees), "began": began, "start": math.degrees(yaw0),
+                   "answered_at": answer["at"] if math.isfinite(answer["at"]) else None,
+                   "samples": [(t, math.degrees(yaw)) for t, yaw in samples]}
+        rotation = Rotation(
+            requested=float(degrees), turned=math.degrees(samples[-1][1] - yaw0),
+            answer=text.strip(), answered_at=answer["at"],
+            stopped_at=stop_time(samples, math.radians(spec["stopped_band"])))
+        return rotation, plotted, rotation.stopped_at - began, hung
+
+
 def rotate(course, folder: str = "") -> Dict:
     import rosservice
     spec, limit = course.checks["rotate"], course.limits["startup"]
@@ -225,52 +273,24 @@ def rotate(course, folder: str = "") -> Dict:
     wait_until(recorder.latest, limit, "/gazebo/model_states with the robot")
     rospy.wait_for_service("/rotate_robot", timeout=limit)
     node = rosservice.get_service_node("/rotate_robot")
-    odom_subscribers = subscribers_of(spec["odom_topic"])
-    uses_odom = node in odom_subscribers
     service_class = rosservice.get_service_class_by_name("/rotate_robot")
-    proxy = rospy.ServiceProxy("/rotate_robot", service_class)
-
-    def still(since):
-        return is_still(recorder.since(since), spec["still_window"], spec["still_speed"])
+    caller = RotateCaller(spec, recorder, rospy.ServiceProxy("/rotate_robot", service_class),
+                          limit)
 
     rotations: List[Rotation] = []
+    durations: List[float] = []
     unasked: List[float] = []
     plotted: List[Dict] = []        # per request: its true yaw samples, in degrees
     failures: List[str] = []
     for index, degrees in enumerate(spec["requests"]):
-        now = rospy.get_time()
-        wait_until(lambda: still(now), limit, "the robot to be still before the request")
-        began, yaw0 = recorder.latest()
-        answer: Dict = {}
-
-        def call():
-            try:
-                answer["response"] = proxy(degrees=int(degrees))
-            except Exception as error:  # pylint: disable=broad-except
-                answer["error"] = f"{type(error).__name__}: {error}"
-            answer["at"] = rospy.get_time()
-        worker = threading.Thread(target=call, daemon=True)
-        worker.start()
-        worker.join(spec["call_timeout"])
-        hung = "at" not in answer
+        rotation, samples, seconds, hung = caller.ask(degrees)
         if hung:
             failures.append(f"rotate {degrees}: no answer within {spec['call_timeout']:g} s")
-            answer.update(at=float("inf"), error="no answer")
-        response = answer.get("response")
-        text = answer_text(response) if response is not None else answer.get("error", "")
-        after = min(answer["at"], rospy.get_time())
-        wait_until(lambda: still(after), limit, f"the robot to stop after rotate {degrees}")
-        samples = recorder.since(began)
-        plotted.append({"requested": float(degrees), "began": began,
-                        "start": math.degrees(yaw0),
-                        "answered_at": answer["at"] if math.isfinite(answer["at"]) else None,
-                        "samples": [(t, math.degrees(yaw)) for t, yaw in samples]})
-        rotations.append(Rotation(
-            requested=float(degrees), turned=math.degrees(samples[-1][1] - yaw0),
-            answer=text.strip(), answered_at=answer["at"],
-            stopped_at=stop_time(samples, math.radians(spec["stopped_band"]))))
+        rotations.append(rotation)
+        durations.append(seconds)
+        plotted.append(samples)
         rest = spec["requests"][index + 1:]
-        if rest and (hung or abs(rotations[-1].error()) >= spec["done_within"]):
+        if rest and (hung or abs(rotation.error()) >= spec["done_within"]):
             # a service that did not answer, or whose turn was not done at all, would do no
             # better with the next (and each may take its call's whole time): the rest
             # are not asked and count as nothing
@@ -278,6 +298,9 @@ def rotate(course, folder: str = "") -> Dict:
                             f" (each counts as nothing): {rest}")
             unasked.extend(rest)
             break
+    # asked last: the robot is respawned geared down for it
+    uses_odom = odometry_use(spec, truth, caller, node, rotations[0], durations[0],
+                             math.isfinite(rotations[0].answered_at))
 
     def describe(r: Rotation) -> str:
         return (f"asked {r.requested:+.0f}: turned {r.turned:+.1f} deg in truth, answer "
@@ -298,13 +321,68 @@ def rotate(course, folder: str = "") -> Dict:
         request["samples"] = thin(request["samples"], per_request)
     return {"checks": {
         "rotate_degrees": degrees_ok,
-        "rotate_uses_odom": [check(f"subscribes to {spec['odom_topic']}", uses_odom,
-                                   f"{node} (serves /rotate_robot) "
-                                   f"{'is' if uses_odom else 'is not'} among the subscribers of "
-                                   f"{spec['odom_topic']}: {odom_subscribers or 'none'}")],
+        "rotate_uses_odom": [uses_odom],
         "rotate_answers_success": success_ok,
     }, "notes": {"rotate_degrees": failures},
         "samples": {"rotate": {"item": "rotate_degrees", "requests": plotted}}}
+
+
+def odometry_use(spec: Dict, truth: Truth, caller: RotateCaller, node: str, free: Rotation,
+                 free_seconds: float, answered: bool) -> Dict:
+    """The odometry item's check: the service's node subscribes to the odometry topic, and
+    a turn asked of the robot geared down (course_grader.odometry_use) still reaches the
+    angle, as a turn by odometry does and a turn by the clock does not. When that turn
+    cannot tell (the first turn was not done, the robot cannot be geared down) the
+    subscription decides and the item is marked for review, saying why."""
+    from course_grader.odometry_use import CannotGearDown, gear_down, judge
+    topic, slowed = spec["odom_topic"], spec["slowed"]
+    subscribers = subscribers_of(topic)
+    subscribed = (f"{node} (serves /rotate_robot) {'is' if node in subscribers else 'is not'} "
+                  f"among the subscribers of {topic}: {subscribers or 'none'}")
+    name = f"turns by {topic}"
+    if node not in subscribers:
+        return check(name, False, f"{subscribed}; the geared-down turn was not asked")
+    if not answered or abs(free.error()) >= spec["done_within"] or not free.turned:
+        why = (f"not judged by behaviour: the first turn ({free.requested:+.0f}) was not done "
+               f"(turned {free.turned:+.1f} deg{'' if answered else ', no answer'}), so a "
+               "slowed one cannot tell odometry from the clock")
+        return check(name, True, f"{subscribed}; {why}", review=why)
+    try:
+        geared = gear_down(rospy.get_param("/robot_description"), slowed["factor"])
+    except CannotGearDown as error:
+        why = f"not judged by behaviour: the robot cannot be geared down: {error}"
+        return check(name, True, f"{subscribed}; {why}", review=why)
+    try:
+        respawn(truth, geared.xml, topic)
+        rotation, _, seconds, hung = caller.ask(slowed["request"])
+    except (ProbeError, rospy.ROSException, rospy.ServiceException) as error:
+        why = f"not judged by behaviour: the geared-down turn could not be measured: {error}"
+        return check(name, True, f"{subscribed}; {why}", review=why)
+    turned_by_odometry, evidence = judge(free, free_seconds, rotation, seconds,
+                                         slowed["factor"], spec["tolerance"])
+    if hung:
+        evidence += f"; no answer within {spec['call_timeout']:g} s"
+    return check(name, turned_by_odometry, f"{subscribed}; {geared.describe()}; {evidence}")
+
+
+def respawn(truth: Truth, urdf_xml: str, odom_topic: str) -> None:
+    """The robot deleted and spawned again from ``urdf_xml`` where it stands, under the
+    same name and the top-level namespace spawn_model gives by default (gazebo_ros's
+    /gazebo/delete_model and /gazebo/spawn_urdf_model), then its odometry awaited."""
+    from gazebo_msgs.srv import DeleteModel, SpawnModel
+    from nav_msgs.msg import Odometry
+    pose = truth.pose()
+    for service, kind, request in (("delete_model", DeleteModel, (truth.model,)),
+                                   ("spawn_urdf_model", SpawnModel,
+                                    (truth.model, urdf_xml, "/", pose, "world"))):
+        rospy.wait_for_service(f"/gazebo/{service}", timeout=truth.timeout)
+        answer = rospy.ServiceProxy(f"/gazebo/{service}", kind)(*request)
+        if not answer.success:
+            raise ProbeError(f"/gazebo/{service} '{truth.model}' to gear the robot down: "
+                             f"{answer.status_message}")
+    # the robot's odometry again, from its new plugin: the service's node, which listens
+    # to the same topic, is reconnected by then as this probe is
+    rospy.wait_for_message(odom_topic, Odometry, timeout=truth.timeout)
 
 
 # --- display.launch (task 1) -------------------------------------------------------------

@@ -46,11 +46,15 @@ def wait_for_simulated_time(timeout: float) -> bool:
         return False
 
 
-def check(name: str, passed: bool, evidence: str, value: Optional[float] = None) -> Dict:
-    """A check's JSON form; ``value``: the quantity measured, which an item's scale reads."""
+def check(name: str, passed: bool, evidence: str, value: Optional[float] = None,
+          review: str = "") -> Dict:
+    """A check's JSON form; ``value``: the quantity measured, which an item's scale reads;
+    ``review``: why a teaching assistant should look (the item is marked review)."""
     answer = {"name": name, "passed": bool(passed), "evidence": evidence}
     if value is not None:
         answer["value"] = float(value)
+    if review:
+        answer["review"] = review
     return answer
 
 

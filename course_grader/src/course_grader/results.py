@@ -14,12 +14,14 @@ from course_grader.course import Course, Item
 class Check:
     """One measured condition: passed or not, and what was measured (one line);
     ``value``, when the check measured a quantity (an error in degrees, a distance), is the
-    figure the item's scale reads."""
+    figure the item's scale reads; ``review``, when set, why a teaching assistant should
+    look at it (what the measurement could not settle)."""
 
     name: str
     passed: bool
     evidence: str
     value: Optional[float] = None
+    review: str = ""
 
     def __post_init__(self):
         self.passed = bool(self.passed)   # numpy's bool_ is not JSON
@@ -30,7 +32,7 @@ class Check:
     def from_dict(data: Dict) -> "Check":
         value = data.get("value")
         return Check(str(data["name"]), bool(data["passed"]), str(data["evidence"]),
-                     None if value is None else float(value))
+                     None if value is None else float(value), str(data.get("review", "")))
 
 
 @dataclass

@@ -7,7 +7,8 @@ turns the error into a share of the points (``scale``). No ROS here.
 An item's scored checks are its parts (several links, several requested angles): each part
 scores 1 when it passed, or its share on the scale when it measured a quantity, and the
 item gets its points times the mean of its parts, less its deductions (never below 0). A
-part whose figure lies near one of the scale's bounds marks the item "review": a teaching
+part whose figure lies near one of the scale's bounds marks the item "review", as does a
+check that says what its measurement could not settle (its ``review``): a teaching
 assistant decides with the evidence shown.
 """
 from __future__ import annotations
@@ -129,6 +130,8 @@ def score(rubric: Rubric, checks: Iterable[Any]) -> Scored:
             scored.notes.append(f"{'pass' if check.passed else 'FAIL'} (not scored: beyond "
                                 f"the guide's sentence): {check.evidence}")
             continue
+        if getattr(check, "review", ""):
+            scored.review.append(f"{check.name}: {check.review}")
         value = getattr(check, "value", None)
         if rubric.scale is not None and value is not None:
             share = rubric.scale.share(value)

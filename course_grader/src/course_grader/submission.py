@@ -21,6 +21,9 @@ BUILD_LOG_LINES = 15   # the compiler's last lines kept as evidence
 BUILD_ERROR_LINES = 8  # lines of the first error message (a compiler's, CMake's) in the evidence
 # a line that starts an error message: gcc/clang 'file:line:col: error:', 'CMake Error at',
 # 'Error:'
+# CMake's words for a package find_package did not find (catkin's COMPONENTS and
+# find_package(X REQUIRED) alike); the log's lines are joined first, as CMake wraps them
+NOT_FOUND = re.compile(r'package configuration file provided by "([A-Za-z0-9_]+)"')
 ERROR_START = re.compile(r"(^|:\s*)(fatal )?error\b|^CMake Error\b|^Error\b", re.IGNORECASE)
 
 
@@ -45,6 +48,8 @@ class Build:
     summary: str
     log_tail: List[str]
     log_path: str
+    # packages the build's find_package looked for and CMake did not find, in log order
+    not_found: List[str] = field(default_factory=list)
 
 
 def _package_name(package_xml: str) -> Optional[str]:
@@ -138,7 +143,13 @@ def build(workspace: str, platform_env: Dict[str, str], limit: float, log_path: 
     reason = f"timed out after {limit:.0f} s" if code is None else f"exit status {code}"
     error = first_error(lines)
     return Build(False, f"catkin_make failed ({reason})" + (f": {error}" if error else "")
-                 + f"; log {log_path}", tail, log_path)
+                 + f"; log {log_path}", tail, log_path, packages_not_found(lines))
+
+
+def packages_not_found(lines: List[str]) -> List[str]:
+    """The packages a build log's find_package did not find, each once, in log order."""
+    found = NOT_FOUND.findall(" ".join(line.strip() for line in lines))
+    return list(dict.fromkeys(found))
 
 
 def first_error(lines: List[str]) -> Optional[str]:

@@ -87,3 +87,49 @@ def test_a_part_the_launch_file_starts_itself_is_not_started_again_by_hand(tmp_p
     launch.write_text(f'<launch><arg name="paused" default="true"/>{include % "false"}</launch>')
     plan = grader.plan_command(hw3, "ddrive_flip", env, [README])
     assert plan.by_hand == [("diff_drive", "flipper")]
+
+
+ARM_README = """# arm_move
+
+```
+roslaunch arm_move arm.launch use_actual:=true   # on the robot
+roslaunch arm_move arm.launch use_fake:=true     # in simulation
+```
+"""
+
+
+def test_a_launch_file_runs_with_the_arguments_its_readme_types():
+    """Issue 31: an arm README that says use_fake:=true is run so (the line that selects
+    the real robot passed over); a plain line among others runs plain; a line that sets
+    the guide's argument otherwise is passed over, one that types it comes first."""
+    real = ["use_actual:=true", "use_sim:=false"]
+    assert instructions.readme_args([ARM_README], "arm_move", "arm.launch", [], real) == \
+        ["use_fake:=true"]
+    assert instructions.readme_args([ARM_README], "arm_move", "other.launch", [], real) == []
+    shown = "roslaunch pkg display.launch\nroslaunch pkg display.launch gui:=false\n"
+    assert instructions.readme_args([shown], "pkg", "display.launch", []) == []
+    flip = ("roslaunch d ddrive.launch paused:=true\nroslaunch d ddrive.launch flip:=false x:=1\n"
+            "roslaunch d ddrive.launch rviz:=true flip:=true\n")
+    assert instructions.readme_args([flip], "d", "ddrive.launch", ["flip:=true"]) == \
+        ["rviz:=true"]
+    assert instructions.readme_args([flip], "d", "ddrive.launch", ["paused:=true"]) == []
+
+
+def test_the_readmes_arguments_are_passed_when_declared_headless_and_guide_winning(
+        tmp_path, monkeypatch):
+    hw3 = course_file.load("me495_hw3")
+    launch = tmp_path / "arm_move" / "launch"
+    launch.mkdir(parents=True)
+    (launch / "arm.launch").write_text(
+        '<launch><arg name="use_fake" default="false"/><arg name="gui" default="true"/>'
+        '</launch>')
+    monkeypatch.setattr(grader.submission, "sourced_find",
+                        lambda env, name: str(tmp_path / name))
+    readme = ARM_README + "\n`roslaunch arm_move arm.launch use_fake:=true gui:=true rate:=2`\n"
+    plan = grader.plan_command(hw3, "arm", {}, [readme])
+    assert plan.readme_args == ["use_fake:=true"]
+    assert plan.notes == ["run with the arguments the README types: roslaunch arm_move "
+                          "arm.launch use_fake:=true"]
+    # a README's gui:=true does not open a window where the scenario has none
+    plan.readme_args.append("gui:=true")
+    assert plan.command_line(["gui:=false"]) == ["gui:=false", "use_fake:=true"]

@@ -179,7 +179,7 @@ def test_totals_table_and_reports(rb1, tmp_path):
 def test_numpy_bools_become_json_bools():
     import numpy as np
     assert json.dumps(Check("a", np.bool_(True), 1.5).__dict__) == \
-        '{"name": "a", "passed": true, "evidence": "1.5", "value": null}'
+        '{"name": "a", "passed": true, "evidence": "1.5", "value": null, "review": ""}'
 
 
 def test_unwrap_counts_across_the_seam():
