@@ -7,6 +7,7 @@
 #   make soak     set up, then the long and timing-bound runs beside make test: the flip
 #                 routine through ROS at four headings at real time (make test runs it at 2x),
 #                 the grader's fault fixtures one at a time (make test grades them in batches),
+#                 a class of twelve RB1 submissions graded two at a time with --summary,
 #                 the simulator started and stopped 50 times (make test: 12, each state 3 times)
 #   make bench    set up, then measure sim_bridge's speed and memory (prints a table)
 #   make lint     catkin_lint -W2 on every package

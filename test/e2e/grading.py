@@ -36,13 +36,13 @@ class Batch:
     [options]``) run to its end: its stdout, wall seconds, the CSV's rows and each
     submission's report items, by the submission's folder name."""
 
-    def __init__(self, course, submissions, out, *options):
+    def __init__(self, course, submissions, out, *options, timeout=BATCH_TIMEOUT):
         shutil.rmtree(out, ignore_errors=True)
         csv_path = os.path.join(out, "scores.csv")
         started = time.monotonic()
         done = subprocess.run(["rosrun", "course_grader", "grade", course, *submissions,
                                "--out", out, "--csv", csv_path, *options],
-                              capture_output=True, text=True, timeout=BATCH_TIMEOUT,
+                              capture_output=True, text=True, timeout=timeout,
                               check=False)
         self.seconds = time.monotonic() - started
         self.out, self.stdout = out, done.stdout

@@ -26,6 +26,13 @@ CMAKE = "diff_drive/CMakeLists.txt"
 FLIP_ARG = ('  <arg name="flip" default="false" doc="Start the flip routine (nodes/flip, settings '
             'in config/flip.yaml)."/>\n')
 FLIP_PASSED = '    <arg name="flip" value="$(arg flip)"/>\n'
+ROBOT_INCLUDE = ('  <include file="$(find diff_drive)/launch/inc/ddrive_robot.launch.xml">\n'
+                 '    <arg name="config" value="$(arg config)"/>\n'
+                 '    <arg name="x" value="$(arg x)"/>\n'
+                 '    <arg name="y" value="$(arg y)"/>\n'
+                 '    <arg name="yaw" value="$(arg yaw)"/>\n'
+                 '    <arg name="flip" value="$(arg flip)"/>\n'
+                 '  </include>\n')
 # ddrive.launch without a flip argument: the flip routine is started by hand
 NO_FLIP_ARGUMENT = (Replace(LAUNCH, FLIP_ARG, ""),
                     Replace(LAUNCH, FLIP_PASSED, '    <arg name="flip" value="false"/>\n'))
@@ -99,6 +106,13 @@ CORRECT_BY_THE_ASSIGNMENT: Dict[str, Fault] = {
              "src/arm_move/scene.py", "config/mover.yaml", "config/scene.yaml",
              "worlds/arm_box.world"))),
         {}, ("layout", "arm_test", "step")),
+    "robot_in_its_own_launch": Fault(
+        "ddrive.launch opens the world only; the robot (flipping) is spawned by robot.launch, "
+        "the README's second command",
+        (Replace(LAUNCH, ROBOT_INCLUDE, ""),
+         Copy("robot_own.launch", "diff_drive/launch/robot.launch"),
+         Copy("readme_robot_own_launch.md", "diff_drive/README.md")),
+        {}, ("layout", "flip")),
     "arm_readme_says_use_fake": Fault(
         "arm.launch runs the real arm by default (use_sim false); its README says "
         "roslaunch arm_move arm.launch use_fake:=true for the simulation",

@@ -128,7 +128,7 @@ FAULTS: Dict[str, Fault] = {
         "machine has, the platform not): the build stops at find_package",
         (Replace(ROS_CMAKE, "find_package(catkin REQUIRED COMPONENTS message_generation)",
                  "find_package(catkin REQUIRED COMPONENTS message_generation turtlesim)"),),
-        nothing_for(ALL_ITEMS), (), platform=True),
+        nothing_for(ALL_ITEMS), ALL_SCENARIOS, platform=True),
     "cpp_rotate_service": Fault(
         "not a fault: the rotate service in C++ (rotate_service.cpp, built by catkin_make)",
         (Copy("rotate_service.cpp", "my_rb1_ros/src/rotate_service.cpp"),

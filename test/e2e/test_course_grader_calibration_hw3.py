@@ -20,7 +20,7 @@ BATCHES = {
                          "yaml_loaded_the_old_way")),
     "flip": (("layout", "flip"),
              ("paused_flip_by_hand", "flip_node_found_by_name", "nodes_not_executable",
-              "flip_started_by_the_launch")),
+              "flip_started_by_the_launch", "robot_in_its_own_launch")),
     "arm": (("layout", "arm_test", "step"), ("arm_move_written_otherwise",
                                               "arm_readme_says_use_fake")),
 }
@@ -78,6 +78,9 @@ def test_the_report_says_how_the_submission_was_run(batches):
     by_launch = flip.items("flip_started_by_the_launch")["flips"]
     assert any("ddrive.launch starts diff_drive/flip itself, so nothing was started by hand"
                in n for n in notes(by_launch)), notes(by_launch)
+    own = flip.items("robot_in_its_own_launch")["flips"]
+    assert any("the robot was spawned by 'roslaunch diff_drive robot.launch' after it" in n
+               for n in notes(own)), notes(own)
     fake = batches["arm"].items("arm_readme_says_use_fake")["step_floor_error"]
     assert any("roslaunch arm_move arm.launch use_fake:=true" in n for n in notes(fake)), \
         notes(fake)

@@ -99,6 +99,9 @@ class Course:
     # arguments that select the real robot ("use_actual:=true"): a README's command line
     # with one of them is not how the grader runs the submission (it has no robot)
     real_robot_args: List[str] = field(default_factory=list)
+    # commands that are to put the robot in the world: one whose launch file starts no
+    # spawner is followed by the README's launch line that does
+    robot_commands: List[str] = field(default_factory=list)
 
     @property
     def total_points(self) -> float:
@@ -172,7 +175,8 @@ def parse(path: str) -> Course:
                         long_scenarios=[str(s) for s in data.get("long_scenarios", [])],
                         by_hand={str(k): (str(v[0]), str(v[1]))
                                  for k, v in data.get("by_hand", {}).items()},
-                        real_robot_args=[str(a) for a in data.get("real_robot_args", [])])
+                        real_robot_args=[str(a) for a in data.get("real_robot_args", [])],
+                        robot_commands=[str(c) for c in data.get("robot_commands", [])])
     except (KeyError, TypeError, ValueError, IndexError) as error:
         raise CourseError(f"{path}: malformed course file ({type(error).__name__}: {error})") \
             from error

@@ -21,6 +21,11 @@ from urdf_tools import UrdfError
 PACKAGE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 REPO = os.path.dirname(PACKAGE_DIR)
 PLATFORM_SETUP = os.path.join(REPO, ".ws", "platform", "devel", "setup.bash")
+# the node that puts a robot into the world (gazebo_ros's spawn_model), as roslaunch reads it
+SPAWNER = ("gazebo_ros", "spawn_model")
+# the simulator's node (gazebo_ros's empty_world.launch starts it): a scenario whose launch
+# files start none runs without one (MoveIt's fake controllers), and its probe is told so
+SIMULATOR = ("gazebo_ros", "gzserver")
 RERUN_SUFFIX = "-rerun"   # a scenario run again after a platform fault logs in <its logs>-rerun
 
 
@@ -49,6 +54,11 @@ class CommandPlan:
     notes: List[str]
     declared: List[str]
     readme_args: List[str] = field(default_factory=list)
+    # launch files the README runs after this one to put the robot in the world, when this
+    # one does not: (package, launch file, the README's arguments, the arguments it declares)
+    then: List[Tuple[str, str, List[str], List[str]]] = field(default_factory=list)
+    # whether the launch file starts a simulator, as roslaunch reads it (None: unread)
+    simulator: Optional[bool] = None
 
     def command_line(self, headless: List[str]) -> List[str]:
         """What follows the launch file: the headless arguments (a README's ``gui:=true``
@@ -104,7 +114,33 @@ def plan_command(course: Course, key: str, env: Dict[str, str],
         else:
             plan.notes.append(f"{not_passed}, and no node of {hand_package} named for "
                               f"'{word}' was found to run by hand")
+    launched = ros_run.launched_nodes(env, path, plan.readme_args + plan.args)
+    plan.simulator = None if launched is None else SIMULATOR in launched
+    if key in course.robot_commands and launched is not None and SPAWNER not in launched:
+        _spawn_as_the_readme_goes_on(plan, env, path, readmes)
     return plan
+
+
+def _spawn_as_the_readme_goes_on(plan: CommandPlan, env: Dict[str, str], path: str,
+                                 readmes: List[str]) -> None:
+    """A command that is to put the robot in the world (course ``robot_commands``), for a
+    launch file that starts no spawner: the README's ``roslaunch`` line whose launch file
+    does start one runs after it, as the README tells its user to go on (the world in one
+    launch file, the robot in another)."""
+    spawner = "/".join(SPAWNER)
+    for words in instructions.commands(readmes):
+        if words[0] != "roslaunch":
+            continue
+        other = _launch_path(env, words[1], words[2])
+        args = [w for w in words[3:] if ":=" in w]
+        if other and other != path and SPAWNER in (ros_run.launched_nodes(env, other, args) or []):
+            plan.then.append((words[1], words[2], args, ros_run.declared_args(other)))
+            plan.notes.append(f"{os.path.basename(path)} starts no {spawner}: the robot was "
+                              f"spawned by 'roslaunch {' '.join(words[1:])}' after it, as the "
+                              "submission's README goes on")
+            return
+    plan.notes.append(f"{os.path.basename(path)} starts no {spawner}, and no launch file the "
+                      "README runs does: no robot was spawned")
 
 
 def call_named(target: str, *args):
@@ -152,6 +188,7 @@ def scenario_run(course: Course, scenario: str, env: Dict[str, str],
     limit = course.limits["scenario"]
     names = []
     said: List[str] = []      # how the commands were run, when not as the guide types them
+    simulators: List[Optional[bool]] = []   # per command: whether it starts a simulator
     session = ros_run.Session(env, log_dir, course.limits)
     try:
         with session:
@@ -169,14 +206,22 @@ def scenario_run(course: Course, scenario: str, env: Dict[str, str],
                 headless = [] if spec.display else \
                     _headless_args(plan.declared, course.headless_args)
                 said += plan.notes
+                simulators.append(plan.simulator)
                 session.launch(key, package, launch_file, plan.command_line(headless))
+                for then_package, then_file, then_args, then_declared in plan.then:
+                    names.append(f"{key}_{os.path.splitext(then_file)[0]}")
+                    session.launch(names[-1], then_package, then_file, then_args + (
+                        [] if spec.display else _headless_args(then_declared,
+                                                               course.headless_args)))
                 for hand_package, node in plan.by_hand:
                     names.append(f"{key}_{node}")
                     session.rosrun(names[-1], hand_package, node)
                 if key in spec.ready and key != spec.commands[-1]:
                     session.wait_for_topic(spec.ready[key], course.limits["startup"])
             remaining = limit - (time.monotonic() - started)
-            answer = session.probe(scenario, course.source, max(1.0, remaining), out)
+            no_simulator = bool(simulators) and all(s is False for s in simulators)
+            answer = session.probe(scenario, course.source, max(1.0, remaining), out,
+                                   {ros_run.NO_SIMULATOR_ENV: "1"} if no_simulator else {})
             session.check_alive()
             trouble = session.trouble(names)
     except ros_run.RunError as error:

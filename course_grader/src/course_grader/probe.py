@@ -10,10 +10,11 @@ from __future__ import annotations
 import importlib
 import json
 import math
+import os
 import sys
 import threading
 import traceback
-from typing import Callable, Dict, List, Tuple
+from typing import Callable, Dict, List, Optional, Tuple
 
 import rospy
 from tf import transformations
@@ -21,6 +22,7 @@ from tf import transformations
 from course_grader import course as course_file
 from course_grader.answer_words import answer_text
 from course_grader.course import scenario_spec
+from course_grader.ros_run import NO_SIMULATOR_ENV
 from course_grader.probe_tools import (ProbeError, check, publishers_of, robot_description,
                                        subscribers_of, wait_for_simulated_time, wait_until)
 from course_grader.measures import (Rotation, distance_outside, is_still, stop_time, thin,
@@ -45,8 +47,9 @@ class Truth:
     def sim_time(self) -> float:
         return self.world().sim_time
 
-    def find_robot(self, joints: List[str]) -> str:
-        """The spawned model whose joints are robot_description's (the student names it)."""
+    def find_robot(self, joints: List[str], timeout: Optional[float] = None) -> str:
+        """The spawned model whose joints are robot_description's (the student names it),
+        waited for ``timeout`` s (the start-up limit when None)."""
         def robot():
             best, overlap = "", 0
             for name in self.world().model_names:
@@ -54,7 +57,7 @@ class Truth:
                 if shared > overlap:
                     best, overlap = name, shared
             return best
-        self.model = wait_until(robot, self.timeout,
+        self.model = wait_until(robot, self.timeout if timeout is None else timeout,
                                 f"a model with the joints {joints} to be spawned")
         return self.model
 
@@ -424,18 +427,26 @@ def unpause_if_paused(timeout: float) -> str:
             "students to ('press play')")
 
 
+def simulated() -> bool:
+    """Whether a simulator runs in this scenario: the grader says when none of its launch
+    files starts one (ros_run.NO_SIMULATOR_ENV; MoveIt's fake controllers), and the probe
+    then waits for no simulated clock and no /gazebo."""
+    return os.environ.get(NO_SIMULATOR_ENV, "") != "1"
+
+
 def main(argv=None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     scenario, config_path = argv[0], argv[1]
     folder = argv[2] if len(argv) > 2 else ""
     course = course_file.parse(config_path)
     spec = scenario_spec(course, scenario)
-    if not spec.display:  # a simulation: on its clock
+    in_simulation = simulated() and not spec.display
+    if in_simulation:  # on the simulation's clock
         wait_for_simulated_time(course.limits["startup"])
     rospy.init_node("course_grader_probe", anonymous=True, disable_signals=True)
     try:
         said = unpause_if_paused(course.limits["startup"]) \
-            if spec.unpause and not spec.display else ""
+            if spec.unpause and in_simulation else ""
         answer = measure(scenario, course, folder)
         if said:
             for item in course.items_of(scenario):

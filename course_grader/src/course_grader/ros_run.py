@@ -24,6 +24,9 @@ from course_grader.results import Killed
 PYTHON = "/usr/bin/python3"   # the system interpreter, where ROS lives
 POLL = 0.1                # s between looks at a condition
 LOG_LINES = 12            # lines of a launch's log kept to explain a failure
+# the probe's environment variable, "1" when none of the scenario's launch files starts a
+# simulator (the grader reads them with roslaunch): no simulated clock, no /gazebo
+NO_SIMULATOR_ENV = "COURSE_GRADER_NO_SIMULATOR"
 # held while an Xvfb starts (see Session.start_display); tools/headless.py takes it too
 XVFB_START_LOCK = "/tmp/.xvfb-start.lock"
 SERVICES = ("roscore", "xvfb")   # what the scenario's launches and nodes use: stopped last
@@ -255,15 +258,17 @@ class Session:
             return []
 
     def probe(self, scenario: str, config_path: str, timeout: float,
-              folder: str = "") -> Dict:
+              folder: str = "", env: Optional[Dict[str, str]] = None) -> Dict:
         """Runs ``python3 -m course_grader.probe`` against this master (``folder``: where it
-        may write pictures for the report); its JSON answer."""
+        may write pictures for the report; ``env``: variables beside the session's); its
+        JSON answer."""
         log_path = os.path.join(self.log_dir, "probe.log")
         command = [PYTHON, "-m", "course_grader.probe", scenario, config_path,
                    *([folder] if folder else [])]
         with open(log_path, "w", encoding="utf-8") as log:
             try:
-                done = subprocess.run(command, env=self.env, stdout=subprocess.PIPE, stderr=log,
+                done = subprocess.run(command, env={**self.env, **(env or {})},
+                                      stdout=subprocess.PIPE, stderr=log,
                                       timeout=timeout, check=False, text=True)
             except subprocess.TimeoutExpired as error:
                 raise ScenarioLimit(f"the checks did not finish within {timeout:.0f} s "

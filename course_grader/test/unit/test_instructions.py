@@ -59,7 +59,8 @@ def test_an_argument_the_launch_file_does_not_declare_is_not_passed(tmp_path, mo
     assert "declares no 'flip' argument" in plan.notes[0]
     assert "rosrun diff_drive flipper" in plan.notes[0]
     (package / "launch" / "ddrive.launch").write_text(
-        '<launch><arg name="flip" default="false"/></launch>')
+        '<launch><arg name="flip" default="false"/>'
+        '<node name="spawn" pkg="gazebo_ros" type="spawn_model" args="-model r"/></launch>')
     plan = grader.plan_command(hw3, "ddrive_flip", {}, [README])
     assert plan.args == ["flip:=true"] and plan.by_hand == [] and plan.notes == []
 
@@ -133,3 +134,33 @@ def test_the_readmes_arguments_are_passed_when_declared_headless_and_guide_winni
     # a README's gui:=true does not open a window where the scenario has none
     plan.readme_args.append("gui:=true")
     assert plan.command_line(["gui:=false"]) == ["gui:=false", "use_fake:=true"]
+
+
+def test_a_world_without_its_robot_is_followed_by_the_readmes_robot_launch(tmp_path,
+                                                                           monkeypatch):
+    """Issue 31: ddrive.launch that opens the world only, its robot spawned by another
+    launch file the README names next: that one runs after it (roslaunch's reading says
+    which starts gazebo_ros/spawn_model); with no such line the report says no robot came."""
+    hw3 = course_file.load("me495_hw3")
+    package = flipper_package(tmp_path)
+    (package / "launch" / "ddrive.launch").write_text(
+        '<launch><arg name="paused" default="false"/><arg name="flip" default="false"/>'
+        '</launch>')
+    (package / "launch" / "robot.launch").write_text(
+        '<launch><arg name="gui" default="true"/><node name="spawn" pkg="gazebo_ros" '
+        'type="spawn_model" args="-urdf -param robot_description -model r"/></launch>')
+    (package / "launch" / "view.launch").write_text(
+        '<launch><node name="rviz" pkg="rviz" type="rviz"/></launch>')
+    monkeypatch.setattr(grader.submission, "sourced_find", lambda env, name: str(package))
+    readme = ("roslaunch diff_drive ddrive.launch\nroslaunch diff_drive view.launch\n"
+              "roslaunch diff_drive robot.launch x:=1\n")
+    plan = grader.plan_command(hw3, "ddrive_flip", dict(os.environ), [readme])
+    assert plan.args == ["flip:=true"]
+    assert plan.then == [("diff_drive", "robot.launch", ["x:=1"], ["gui"])]
+    assert ("ddrive.launch starts no gazebo_ros/spawn_model: the robot was spawned by "
+            "'roslaunch diff_drive robot.launch x:=1' after it") in plan.notes[-1]
+    plan = grader.plan_command(hw3, "ddrive_flip", dict(os.environ),
+                               ["roslaunch diff_drive view.launch"])
+    assert plan.then == [] and "no robot was spawned" in plan.notes[-1]
+    # the arm's command is not one that puts the robot in the world
+    assert grader.plan_command(hw3, "arm", dict(os.environ), [readme]).then == []
