@@ -51,6 +51,9 @@ class ScenarioSpec:
     # a world its launch file starts paused is unpaused before the probe, as the assignment
     # tells students ("press play"); false where starting paused is what is graded
     unpause: bool = True
+    # the probe can measure a run whose launch files start no simulator (MoveIt's fake
+    # controllers): the grader reads them (roslaunch) to tell it so
+    without_simulator: bool = False
 
 
 # the report's pictures when the course file has no ``report`` section: the rviz screenshot
@@ -218,14 +221,16 @@ def _report_settings(data: Dict[str, Any]) -> Dict[str, Any]:
 def _scenario_specs(data: Dict[str, Any]) -> Dict[str, ScenarioSpec]:
     specs = {}
     for name, spec in data.items():
-        unknown = set(spec) - {"commands", "ready", "probe", "runner", "display", "unpause"}
+        unknown = set(spec) - {"commands", "ready", "probe", "runner", "display", "unpause",
+                               "without_simulator"}
         if unknown:
             raise ValueError(f"scenario '{name}' has unknown keys {sorted(unknown)}")
         specs[str(name)] = ScenarioSpec(
             commands=tuple(str(c) for c in spec.get("commands", [])),
             ready={str(k): str(v) for k, v in spec.get("ready", {}).items()},
             probe=str(spec.get("probe", "")), runner=str(spec.get("runner", "")),
-            display=bool(spec.get("display", False)), unpause=bool(spec.get("unpause", True)))
+            display=bool(spec.get("display", False)), unpause=bool(spec.get("unpause", True)),
+            without_simulator=bool(spec.get("without_simulator", False)))
     return specs
 
 

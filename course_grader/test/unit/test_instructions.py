@@ -164,3 +164,22 @@ def test_a_world_without_its_robot_is_followed_by_the_readmes_robot_launch(tmp_p
     assert plan.then == [] and "no robot was spawned" in plan.notes[-1]
     # the arm's command is not one that puts the robot in the world
     assert grader.plan_command(hw3, "arm", dict(os.environ), [readme]).then == []
+
+
+def test_a_launch_without_a_simulator_is_told_when_the_scenario_can_run_so(tmp_path,
+                                                                           monkeypatch):
+    """MoveIt's fake controllers start no gazebo_ros gzserver: the plan says so, read only
+    where the scenario can be measured without one (hw3's step)."""
+    hw3 = course_file.load("me495_hw3")
+    launch = tmp_path / "arm_move" / "launch"
+    launch.mkdir(parents=True)
+    arm = launch / "arm.launch"
+    monkeypatch.setattr(grader.submission, "sourced_find",
+                        lambda env, name: str(tmp_path / name))
+    env = dict(os.environ)
+    arm.write_text('<launch><arg name="use_fake" default="false"/><node unless="$(arg '
+                   'use_fake)" name="gazebo" pkg="gazebo_ros" type="gzserver"/></launch>')
+    assert grader.plan_command(hw3, "arm", env, [ARM_README], True).simulator is False
+    assert grader.plan_command(hw3, "arm", env, [], True).simulator is True
+    assert grader.plan_command(hw3, "arm", env, [], False).simulator is None
+    assert course_file.scenario_spec(hw3, "step").without_simulator
