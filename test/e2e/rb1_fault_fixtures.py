@@ -215,6 +215,16 @@ CORRECT_BY_THE_GUIDE: Dict[str, Fault] = {
          Replace(URDF, '<origin xyz="-0.1 0.0 -0.15" rpy="0 0 0"/>',
                  '<origin xyz="-0.1 0.0 -0.14" rpy="0 0 0"/>')),
         {}, ("spawn", "drive")),
+    "rviz_in_every_launch": Fault(
+        "the warehouse launch opens rviz whatever its arguments (no gui/rviz argument for it), "
+        "as a student's launch file does",
+        (Replace(LAUNCH, '  <node name="robot_state_publisher" pkg="robot_state_publisher" '
+                         'type="robot_state_publisher"/>\n',
+                 '  <node name="robot_state_publisher" pkg="robot_state_publisher" '
+                 'type="robot_state_publisher"/>\n'
+                 '  <node name="rviz" pkg="rviz" type="rviz" '
+                 'args="-d $(find my_rb1_description)/rviz/simulation.rviz"/>\n'),),
+        {}, ("spawn", "drive")),
     "starts_paused": Fault(
         "the warehouse launch starts paused (its README: hit play in Gazebo)",
         (Replace(LAUNCH, '<arg name="paused" default="false"', '<arg name="paused" default="true"'),
@@ -354,6 +364,11 @@ def _tilted(items, limit):
     assert 5.0 < float(note.split("tilted ")[1].split()[0]) < 8.0, note
 
 
+def _rviz_ran(items, limit):
+    for item in items.values():   # rviz under the scenario's screen: nothing for the platform
+        assert item["mark"] == "" and not item["platform"], item
+
+
 def _paused(items, limit):
     for item_id in ("spawn_in_start_square", "cmd_vel_moves"):
         _said(items[item_id], "the world started paused")
@@ -383,7 +398,7 @@ EVIDENCE = {"links_named_otherwise": _renamed, "joint_names_differ": _joint_name
             "answers_before_turning": _early, "turn_wraps_at_180": _wraps,
             "degrees_as_radians": _radians, "no_success_message": _no_success,
             "does_not_build": _no_build, "node_hangs": _hangs,
-            "needs_turtlesim": _lacks_turtlesim}
+            "needs_turtlesim": _lacks_turtlesim, "rviz_in_every_launch": _rviz_ran}
 
 
 def check_evidence(name: str, items: Dict[str, dict], scenario_limit: Optional[float]) -> None:
