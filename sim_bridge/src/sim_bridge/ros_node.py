@@ -599,6 +599,7 @@ class SimBridgeNode:
         anchor_wall, anchor_ns = self._pace_anchor
         ahead = anchor_wall + (self.world.now_ns - anchor_ns) / 1e9 / factor - wall
         if ahead > PACE_BATCH:
+            self.clock.flush()   # the steps' times out before the wait, not after
             time.sleep(ahead)
         elif ahead < -0.5:  # far behind (a slow spell): do not race to catch up
             self._pace_anchor = None
@@ -617,6 +618,7 @@ class SimBridgeNode:
                 if now - last_paused_clock > PAUSED_CLOCK_PERIOD:
                     self._publish_clock()
                     last_paused_clock = now
+                self.clock.flush()
                 time.sleep(0.002)
                 continue
             self.world.step()

@@ -177,3 +177,102 @@ def test_publish_serialized_writes_every_connection_in_order_and_drops_a_broken_
         Handle.impl.close()
         for end in Broken.ends:
             end.close()
+
+
+class FakeWall:
+    """A wall clock the test moves."""
+
+    def __init__(self):
+        self.now = 100.0
+
+    def __call__(self):
+        return self.now
+
+
+def clock_publisher(monkeypatch, wall):
+    """sim_bridge's ClockPublisher on rospy's real publisher implementation with one
+    connection to a socket the test reads (no master)."""
+    from rosgraph_msgs.msg import Clock
+    from rospy.topics import _PublisherImpl
+
+    from sim_bridge import ros_publishing
+
+    class Handle:
+        def __init__(self, *args, **kwargs):
+            self.impl = _PublisherImpl("/clock_coalesced", Clock)
+
+    monkeypatch.setattr(ros_publishing.rospy, "Publisher", Handle)
+    publisher = ros_publishing.ClockPublisher(wall=wall)
+    queued, transport, reader = connection()
+    publisher.publisher.impl.add_connection(queued)
+    return publisher, transport, reader
+
+
+def clock_times(sock, timeout):
+    """(nanoseconds of each /clock frame read, how many recv calls returned data) until
+    nothing arrives for ``timeout``."""
+    sock.settimeout(timeout)
+    data, reads = b"", 0
+    try:
+        while True:
+            chunk = sock.recv(1 << 20)
+            if not chunk:
+                break
+            data, reads = data + chunk, reads + 1
+    except socket.timeout:
+        pass
+    times = []
+    while len(data) >= 12:
+        length, secs, nsecs = struct.unpack_from("<III", data)
+        assert length == 8
+        times.append(secs * 1_000_000_000 + nsecs)
+        data = data[12:]
+    assert data == b""
+    return times, reads
+
+
+def test_fast_steps_clocks_go_out_together_every_one_in_order(monkeypatch):
+    """At full speed (40 us a step) the steps of about COALESCE of wall time go out in one
+    write, each whole and in order; flush writes the rest (before the loop sleeps or
+    pauses)."""
+    from sim_bridge.ros_publishing import COALESCE
+    wall = FakeWall()
+    publisher, transport, reader = clock_publisher(monkeypatch, wall)
+    steps = [step * 1_000_000 for step in range(1, 61)]
+    try:
+        for step in steps:
+            wall.now += 40e-6
+            publisher.publish(step)
+        written, _ = clock_times(reader, 0.3)
+        assert written == steps[:len(written)]     # a prefix, in order
+        batch = COALESCE / 40e-6
+        assert 60 - batch <= len(written) < 60
+        # the first at once (no step measured yet), then a write per batch: not 60
+        assert transport.stat_num_msg <= 1 + len(written) / (batch - 1)
+        publisher.flush()
+        assert written + clock_times(reader, 0.3)[0] == steps
+    finally:
+        transport.close()
+
+
+def test_a_slow_step_writes_its_clock_at_once(monkeypatch):
+    """A step longer than COALESCE (a heavy scene) does not wait for the next one."""
+    wall = FakeWall()
+    publisher, transport, reader = clock_publisher(monkeypatch, wall)
+    try:
+        for step in range(1, 4):
+            wall.now += 0.002
+            publisher.publish(step * 1_000_000)
+            assert clock_times(reader, 0.2)[0] == [step * 1_000_000]
+    finally:
+        transport.close()
+
+
+def test_without_subscribers_nothing_is_kept_and_rospy_time_still_follows(monkeypatch):
+    import rospy
+    wall = FakeWall()
+    publisher, transport, reader = clock_publisher(monkeypatch, wall)
+    transport.close()      # the only subscriber went away
+    publisher.publish(5_000_000)
+    publisher.flush()
+    assert publisher._pending == []
