@@ -18,7 +18,7 @@ UPSTREAM_NAMES = {
     "velocity_controllers", "joint_trajectory_controller", "diff_drive_controller", "xacro",
     "teleop_twist_keyboard", "urdf_tutorial", "rqt_robot_steering",
     "joint_state_publisher_gui", "controller_manager", "controller_manager_msgs",
-    "control_msgs", "media_export",
+    "control_msgs", "media_export", "turtlesim",
 }
 
 
