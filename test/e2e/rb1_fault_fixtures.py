@@ -123,11 +123,12 @@ FAULTS: Dict[str, Fault] = {
         (Replace(NODE, '                    return (f"success: rotated {degrees} degrees',
                  '                    return (f"rotating by {degrees} degrees'),),
         {"rotate_answers_success": 0.0}, ("rotate",)),
-    "needs_turtlesim": Fault(
-        "not the student's fault: my_rb1_ros finds turtlesim (a ROS package the student's "
-        "machine has, the platform not): the build stops at find_package",
+    "needs_turtle_actionlib": Fault(
+        "not the student's fault: my_rb1_ros finds turtle_actionlib (common_tutorials' "
+        "actionlib turtle, a Noetic package the student's machine has and the platform not): "
+        "the build stops at find_package",
         (Replace(ROS_CMAKE, "find_package(catkin REQUIRED COMPONENTS message_generation)",
-                 "find_package(catkin REQUIRED COMPONENTS message_generation turtlesim)"),),
+                 "find_package(catkin REQUIRED COMPONENTS message_generation turtle_actionlib)"),),
         nothing_for(ALL_ITEMS), ALL_SCENARIOS, platform=True),
     "cpp_rotate_service": Fault(
         "not a fault: the rotate service in C++ (rotate_service.cpp, built by catkin_make)",
@@ -328,11 +329,11 @@ def _no_build(items, limit):
         assert "Cannot locate message [in32]" in item["evidence"], item
 
 
-def _lacks_turtlesim(items, limit):
+def _lacks_turtle_actionlib(items, limit):
     for item in items.values():
         assert item["mark"] == "platform", item
-        assert "the grading platform has no package 'turtlesim'" in item["platform"], item
-        assert "ros-noetic-turtlesim" in item["platform"], item
+        assert "the grading platform has no package 'turtle_actionlib'" in item["platform"], item
+        assert "ros-noetic-turtle-actionlib" in item["platform"], item
 
 
 def _hangs(items, limit):
@@ -398,7 +399,7 @@ EVIDENCE = {"links_named_otherwise": _renamed, "joint_names_differ": _joint_name
             "answers_before_turning": _early, "turn_wraps_at_180": _wraps,
             "degrees_as_radians": _radians, "no_success_message": _no_success,
             "does_not_build": _no_build, "node_hangs": _hangs,
-            "needs_turtlesim": _lacks_turtlesim, "rviz_in_every_launch": _rviz_ran}
+            "needs_turtle_actionlib": _lacks_turtle_actionlib, "rviz_in_every_launch": _rviz_ran}
 
 
 def check_evidence(name: str, items: Dict[str, dict], scenario_limit: Optional[float]) -> None:

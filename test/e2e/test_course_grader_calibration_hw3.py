@@ -19,11 +19,14 @@ BATCHES = {
                         ("xacro_named_otherwise", "world_models_named_otherwise",
                          "yaml_loaded_the_old_way")),
     "flip": (("layout", "flip"),
-             ("paused_flip_by_hand", "flip_node_found_by_name", "nodes_not_executable",
-              "flip_started_by_the_launch", "robot_in_its_own_launch")),
+             ("paused_flip_by_hand", "flip_node_found_by_name", "flip_started_by_the_launch",
+              "robot_in_its_own_launch")),
     "arm": (("layout", "arm_test", "step"), ("arm_move_written_otherwise",
                                               "arm_readme_says_use_fake")),
 }
+# graded by make soak (test/soak/test_course_grader_hw3_soak.py), to keep make test within
+# its 15 minutes: four flip fixtures are two rounds of two jobs, five were three
+SOAK_ONLY = ("nodes_not_executable",)
 RESULTS = os.path.join("test_results", "e2e", "course_grader", "calibration_hw3")
 
 
@@ -51,10 +54,10 @@ def notes(item):
 
 def test_every_fixture_is_graded_once():
     placed = [f for _, fixtures in BATCHES.values() for f in fixtures]
-    assert sorted(placed) == sorted(CORRECT_BY_THE_ASSIGNMENT)
+    assert sorted(placed + list(SOAK_ONLY)) == sorted(CORRECT_BY_THE_ASSIGNMENT)
 
 
-@pytest.mark.parametrize("fixture", list(CORRECT_BY_THE_ASSIGNMENT))
+@pytest.mark.parametrize("fixture", [f for f in CORRECT_BY_THE_ASSIGNMENT if f not in SOAK_ONLY])
 def test_a_submission_correct_by_the_assignment_gets_full_marks(batches, fixture):
     batch = batches[batch_of(fixture)]
     hw3 = course_file.load("me495_hw3")

@@ -17,7 +17,7 @@ from grading import Batch  # noqa: E402
 CLASS = ("laser_not_upside_down", "links_named_otherwise", "xacro_description",
          "spawned_outside_square", "casters_tilt_it", "starts_paused",
          "timed_with_odom_subscriber", "turn_wraps_at_180", "rotate_overshoots",
-         "success_in_own_words", "needs_turtlesim")
+         "success_in_own_words", "needs_turtle_actionlib")
 SOLUTION = "solution"
 RESULTS = os.path.join("test_results", "soak", "course_grader", "class")
 CLASS_TIMEOUT = 2400      # s: twelve submissions, every scenario, two at a time

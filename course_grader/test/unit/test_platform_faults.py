@@ -119,14 +119,14 @@ def test_a_scenario_the_platform_failed_is_run_once_more(tmp_path, monkeypatch):
 
 # CMake's words (3.25, Debian bookworm) for catkin COMPONENTS it did not find, wrapped as
 # CMake wraps them, and for find_package(X REQUIRED)
-CATKIN_COMPONENT = """-- Could NOT find turtlesim (missing: turtlesim_DIR)
--- Could not find the required component 'turtlesim'. The following CMake error indicates that you either need to install the package with the same name or change your environment so that it can be found.
+CATKIN_COMPONENT = """-- Could NOT find turtle_actionlib (missing: turtle_actionlib_DIR)
+-- Could not find the required component 'turtle_actionlib'. The following CMake error indicates that you either need to install the package with the same name or change your environment so that it can be found.
 CMake Error at /usr/share/catkin/cmake/catkinConfig.cmake:83 (find_package):
-  Could not find a package configuration file provided by "turtlesim" with
-  any of the following names:
+  Could not find a package configuration file provided by
+  "turtle_actionlib" with any of the following names:
 
-    turtlesimConfig.cmake
-    turtlesim-config.cmake
+    turtle_actionlibConfig.cmake
+    turtle_actionlib-config.cmake
 """
 DIRECT = """CMake Error at CMakeLists.txt:12 (find_package):
   By not providing "Findmy_msgs.cmake" in CMAKE_MODULE_PATH this project has
@@ -136,14 +136,15 @@ DIRECT = """CMake Error at CMakeLists.txt:12 (find_package):
 
 
 def test_a_build_stopped_at_a_package_the_platform_lacks_is_the_platforms():
-    """Issue 31: a submission whose CMakeLists.txt finds turtlesim (the student's machine
+    """Issue 31: a submission whose CMakeLists.txt finds turtle_actionlib (the student's machine
     has it) is not the student's 0: the platform lacks it, named with what to install."""
     from course_grader.submission import packages_not_found
     lines = (CATKIN_COMPONENT + DIRECT + CATKIN_COMPONENT).splitlines()
-    assert packages_not_found(lines) == ["turtlesim", "my_msgs"]
-    lacks = platform_faults.build_lacks(["turtlesim", "my_msgs"], ["diff_drive", "my_msgs"])
-    assert "no package 'turtlesim', which the submission's build finds" in lacks
-    assert "install it where the grader runs (on ROS Noetic: ros-noetic-turtlesim)" in lacks
+    assert packages_not_found(lines) == ["turtle_actionlib", "my_msgs"]
+    lacks = platform_faults.build_lacks(["turtle_actionlib", "my_msgs"],
+                                        ["diff_drive", "my_msgs"])
+    assert "no package 'turtle_actionlib', which the submission's build finds" in lacks
+    assert "install it where the grader runs (on ROS Noetic: ros-noetic-turtle-actionlib)" in lacks
     # a package of the submission's own that did not build is the submission's
     assert platform_faults.build_lacks(["my_msgs"], ["my_msgs"]) is None
     assert platform_faults.build_lacks([], ["diff_drive"]) is None
