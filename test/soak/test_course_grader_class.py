@@ -19,6 +19,10 @@ CLASS = ("laser_not_upside_down", "links_named_otherwise", "xacro_description",
          "timed_with_odom_subscriber", "turn_wraps_at_180", "rotate_overshoots",
          "success_in_own_words", "needs_turtle_actionlib")
 SOLUTION = "solution"
+# what a fixture loses on items beyond the scenarios its fault is graded on in make test
+# (graded here, every scenario): casters_tilt_it's casters are 1 cm above the guide's
+# places, two of the display item's eight parts
+ELSEWHERE = {"casters_tilt_it": {"display_links_tf": 1.6875}}
 RESULTS = os.path.join("test_results", "soak", "course_grader", "class")
 CLASS_TIMEOUT = 2400      # s: twelve submissions, every scenario, two at a time
 
@@ -49,7 +53,7 @@ def test_each_submission_gets_its_points(graded_class, name):
     items = course_file.load("rb1").items
     row = graded_class.rows[name]
     expected = {i.id: i.points for i in items} if name == SOLUTION else \
-        fixtures.ALL_FIXTURES[name].expected(items)
+        dict(fixtures.ALL_FIXTURES[name].expected(items), **ELSEWHERE.get(name, {}))
     awarded = graded_class.items(name)
     for item in items:
         slack = fixtures.SCALED_SLACK if item.rubric.scale else 0.0

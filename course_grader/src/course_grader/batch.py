@@ -430,21 +430,24 @@ def main(parser, args, course: Course, out: str) -> int:
 
 def distribution(course: Course, outcomes: List[Outcome]) -> str:
     """The class per item: how many got full, part and no marks, the mean, and how many
-    are marked review or platform. An item that nobody passes is flagged: the grader's
-    fault until shown otherwise."""
+    are marked review or platform. An item the platform kept from being graded (marked
+    platform) is no score of the student's: it is counted apart, not as a 0. An item that
+    nobody passes is flagged: the grader's fault until shown otherwise."""
     rows = []
     for item in course.items:
-        scores = [o.awarded[item.id] for o in outcomes if item.id in o.awarded]
-        if not scores:
+        graded = [o for o in outcomes if item.id in o.awarded]
+        marks = [o.marks.get(item.id) for o in graded]
+        scores = [o.awarded[item.id] for o in graded if o.marks.get(item.id) != "platform"]
+        if not graded:
             continue
         full = sum(score >= item.points for score in scores)
         none = sum(score == 0 for score in scores)
-        marks = [o.marks.get(item.id) for o in outcomes]
+        mean = f"{sum(scores) / len(scores):.2f}" if scores else "-"
         flag = "  <- nobody has full marks: check the rubric" if full == 0 and \
             len(scores) > 1 else ""
         rows.append((item.id, f"{_points(item.points)}", f"{full}", f"{len(scores) - full - none}",
-                     f"{none}", f"{sum(scores) / len(scores):.2f}",
-                     f"{marks.count('review')}", f"{marks.count('platform')}", flag))
+                     f"{none}", mean, f"{marks.count('review')}", f"{marks.count('platform')}",
+                     flag))
     header = ("item", "points", "full", "part", "none", "mean", "review", "platform", "")
     widths = [max(len(str(row[i])) for row in rows + [header]) for i in range(8)]
     lines = ["  ".join(f"{cell:<{w}}" for cell, w in zip(header, widths)).rstrip()]

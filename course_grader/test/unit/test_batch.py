@@ -125,6 +125,24 @@ def test_the_class_distribution_flags_an_item_nobody_passes(rb1):
     assert spawn.split()[2:5] == ["0", "0", "3"] and "nobody has full marks" in spawn
 
 
+def test_an_item_the_platform_kept_from_grading_is_no_zero_of_the_class(rb1):
+    """A submission whose build stopped at a package the platform lacks has every item
+    marked platform: counted apart, not among the class's no-marks, not in the mean."""
+    full = {item.id: item.points for item in rb1.items}
+    outcomes = [batch.Outcome("s/a", "a", "graded", dict(full), 10.0),
+                batch.Outcome("s/b", "b", "graded", dict(full, rotate_degrees=1.0), 10.0),
+                batch.Outcome("s/c", "c", "incomplete", {i: 0.0 for i in full}, 2.0)]
+    outcomes[2].marks = {i: "platform" for i in full}
+    table = batch.distribution(rb1, outcomes).splitlines()
+    (rotate,) = [line for line in table if line.startswith("rotate_degrees")]
+    assert rotate.split()[1:8] == ["2", "1", "1", "0", "1.50", "0", "1"]
+    only = [batch.Outcome("s/c", "c", "incomplete", {i: 0.0 for i in full}, 2.0)]
+    only[0].marks = {i: "platform" for i in full}
+    (rotate,) = [line for line in batch.distribution(rb1, only).splitlines()
+                 if line.startswith("rotate_degrees")]
+    assert rotate.split()[1:8] == ["2", "0", "0", "0", "-", "0", "1"]
+
+
 def test_outcome_read_from_the_child(rb1, tmp_path):
     out = tmp_path / "a"
     results = [judge(item, [Check("c", index != 0, "m")]) for index, item in enumerate(rb1.items)]
