@@ -64,9 +64,9 @@ class CommandPlan:
         """What follows the launch file: the headless arguments (a README's ``gui:=true``
         does not open a window where the scenario has no screen), the README's, the
         guide's last (roslaunch takes an argument's last value)."""
-        names = {arg.split(":=")[0] for arg in headless}
-        return headless + [a for a in self.readme_args if a.split(":=")[0] not in names] \
-            + self.args
+        names = {instructions.arg_name(arg) for arg in headless}
+        return headless + [a for a in self.readme_args
+                           if instructions.arg_name(a) not in names] + self.args
 
 
 def plan_command(course: Course, key: str, env: Dict[str, str], readmes: List[str],
@@ -79,14 +79,24 @@ def plan_command(course: Course, key: str, env: Dict[str, str], readmes: List[st
     package, launch_file = course.commands[key]
     path = _launch_path(env, package, launch_file)
     plan = CommandPlan([], [], [], ros_run.declared_args(path))
+    read: Dict[Tuple[str, ...], Optional[List[Tuple[str, str]]]] = {}
+
+    def launched() -> Optional[List[Tuple[str, str]]]:
+        """The nodes the launch file starts with the arguments passed so far, as roslaunch
+        reads them (0.7 s a reading: once per set of arguments)."""
+        args = tuple(plan.readme_args + plan.args)
+        if args not in read:
+            read[args] = ros_run.launched_nodes(env, path, list(args))
+        return read[args]
+
     typed = instructions.readme_args(readmes, package, launch_file,
                                      course.command_args.get(key, []), course.real_robot_args)
-    plan.readme_args = [arg for arg in typed if arg.split(":=")[0] in plan.declared]
+    plan.readme_args = [a for a in typed if instructions.arg_name(a) in plan.declared]
     if plan.readme_args:
         plan.notes.append(f"run with the arguments the README types: roslaunch {package} "
                           f"{launch_file} {' '.join(plan.readme_args)}")
     for arg in course.command_args.get(key, []):
-        name = arg.split(":=")[0]
+        name = instructions.arg_name(arg)
         if name in plan.declared:
             plan.args.append(arg)
             continue
@@ -98,8 +108,7 @@ def plan_command(course: Course, key: str, env: Dict[str, str], readmes: List[st
         hand_package, word = hand
         # a launch file that starts the part itself needs no second one by hand (two flip
         # routines fight over cmd_vel)
-        launched = ros_run.launched_nodes(env, path, plan.readme_args + plan.args) or []
-        own = [kind for pkg, kind in launched if pkg == hand_package and word in kind]
+        own = [kind for pkg, kind in launched() or [] if pkg == hand_package and word in kind]
         if own:
             plan.notes.append(f"{not_passed}; {launch_file} starts {hand_package}/{own[0]} "
                               "itself, so nothing was started by hand")
@@ -116,12 +125,10 @@ def plan_command(course: Course, key: str, env: Dict[str, str], readmes: List[st
         else:
             plan.notes.append(f"{not_passed}, and no node of {hand_package} named for "
                               f"'{word}' was found to run by hand")
-    if not read_simulator and key not in course.robot_commands:
-        return plan
-    launched = ros_run.launched_nodes(env, path, plan.readme_args + plan.args)
     if read_simulator:
-        plan.simulator = None if launched is None else SIMULATOR in launched
-    if key in course.robot_commands and launched is not None and SPAWNER not in launched:
+        nodes = launched()
+        plan.simulator = None if nodes is None else SIMULATOR in nodes
+    if key in course.robot_commands and launched() is not None and SPAWNER not in launched():
         _spawn_as_the_readme_goes_on(plan, env, path, readmes)
     return plan
 
@@ -201,6 +208,9 @@ def scenario_run(course: Course, scenario: str, env: Dict[str, str],
             # every scenario has a screen, as the student's machine has: a launch file
             # that opens rviz or a GUI whatever its arguments is not failed for want of one
             session.start_display()
+
+            def headless(declared: List[str]) -> List[str]:
+                return [] if spec.display else _headless_args(declared, course.headless_args)
             for key in spec.commands:
                 package, launch_file = course.commands[key]
                 names.append(key)
@@ -208,16 +218,14 @@ def scenario_run(course: Course, scenario: str, env: Dict[str, str],
                 # the command as typed; the others with the headless arguments the launch
                 # file declares (gui:=false), as a student on a slow machine would
                 plan = plan_command(course, key, env, list(readmes), spec.without_simulator)
-                headless = [] if spec.display else \
-                    _headless_args(plan.declared, course.headless_args)
                 said += plan.notes
                 simulators.append(plan.simulator)
-                session.launch(key, package, launch_file, plan.command_line(headless))
+                session.launch(key, package, launch_file,
+                               plan.command_line(headless(plan.declared)))
                 for then_package, then_file, then_args, then_declared in plan.then:
                     names.append(f"{key}_{os.path.splitext(then_file)[0]}")
-                    session.launch(names[-1], then_package, then_file, then_args + (
-                        [] if spec.display else _headless_args(then_declared,
-                                                               course.headless_args)))
+                    session.launch(names[-1], then_package, then_file,
+                                   then_args + headless(then_declared))
                 for hand_package, node in plan.by_hand:
                     names.append(f"{key}_{node}")
                     session.rosrun(names[-1], hand_package, node)

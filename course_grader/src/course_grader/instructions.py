@@ -46,7 +46,8 @@ def commands(texts: Iterable[str]) -> List[List[str]]:
     return found
 
 
-def _name(arg: str) -> str:
+def arg_name(arg: str) -> str:
+    """A roslaunch argument's name: ``flip`` of ``flip:=true``."""
     return arg.split(":=")[0]
 
 
@@ -60,19 +61,19 @@ def readme_args(texts: Iterable[str], package: str, launch_file: str,
     Empty when the README runs it with the guide's arguments alone (a plain line among
     others, ``display.launch`` beside ``display.launch gui:=false``) or not at all."""
     guide = list(guide_args)
-    guide_values = {_name(a): a for a in guide}
+    guide_values = {arg_name(a): a for a in guide}
     real = set(real_robot_args)
     lines = []
     for words in commands(texts):
         if words[:3] != ["roslaunch", package, launch_file]:
             continue
         args = [w for w in words[3:] if ":=" in w]
-        if real & set(args) or any(_name(a) in guide_values and a != guide_values[_name(a)]
+        if real & set(args) or any(arg_name(a) in guide_values and a != guide_values[arg_name(a)]
                                    for a in args):
             continue
         lines.append(args)
     preferred = [args for args in lines if set(guide) <= set(args)] or lines
-    extras = [[a for a in args if _name(a) not in guide_values] for args in preferred]
+    extras = [[a for a in args if arg_name(a) not in guide_values] for args in preferred]
     if not extras or any(not e for e in extras):
         return []
     return extras[0]

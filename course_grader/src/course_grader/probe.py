@@ -343,24 +343,26 @@ def odometry_use(spec: Dict, truth: Truth, caller: RotateCaller, node: str, free
     subscribed = (f"{node} (serves /rotate_robot) {'is' if node in subscribers else 'is not'} "
                   f"among the subscribers of {topic}: {subscribers or 'none'}")
     name = f"turns by {topic}"
+
+    def by_subscription(why: str) -> Dict:
+        why = f"not judged by behaviour: {why}"
+        return check(name, True, f"{subscribed}; {why}", review=why)
     if node not in subscribers:
         return check(name, False, f"{subscribed}; the geared-down turn was not asked")
     if not answered or abs(free.error()) >= spec["done_within"] or not free.turned:
-        why = (f"not judged by behaviour: the first turn ({free.requested:+.0f}) was not done "
-               f"(turned {free.turned:+.1f} deg{'' if answered else ', no answer'}), so a "
-               "slowed one cannot tell odometry from the clock")
-        return check(name, True, f"{subscribed}; {why}", review=why)
+        return by_subscription(
+            f"the first turn ({free.requested:+.0f}) was not done (turned {free.turned:+.1f} "
+            f"deg{'' if answered else ', no answer'}), so a slowed one cannot tell odometry "
+            "from the clock")
     try:
         geared = gear_down(rospy.get_param("/robot_description"), slowed["factor"])
     except CannotGearDown as error:
-        why = f"not judged by behaviour: the robot cannot be geared down: {error}"
-        return check(name, True, f"{subscribed}; {why}", review=why)
+        return by_subscription(f"the robot cannot be geared down: {error}")
     try:
         respawn(truth, geared.xml, topic)
         rotation, _, seconds, hung = caller.ask(slowed["request"])
     except (ProbeError, rospy.ROSException, rospy.ServiceException) as error:
-        why = f"not judged by behaviour: the geared-down turn could not be measured: {error}"
-        return check(name, True, f"{subscribed}; {why}", review=why)
+        return by_subscription(f"the geared-down turn could not be measured: {error}")
     turned_by_odometry, evidence = judge(free, free_seconds, rotation, seconds,
                                          slowed["factor"], spec["tolerance"])
     if hung:

@@ -1,5 +1,7 @@
-"""turtle_world.canvas on Qt's offscreen platform: the window's size and title, the pen's
-lines on the path image, the colour sensor's pixel, the drawn turtles. No display, no ROS."""
+"""turtle_world.canvas on Qt's offscreen platform: the window's size and title
+(turtle_frame.cpp:47, :53-54), the pen's lines on the path image (turtle.cpp:35-37, :50-53,
+:201-209), the colour sensor's pixel (turtle.cpp:185-192), the drawn turtles; upstream is
+ros/ros_tutorials noetic-devel db63288, turtlesim/src. No display, no ROS."""
 import math
 
 import pytest

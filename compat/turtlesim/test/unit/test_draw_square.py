@@ -1,6 +1,7 @@
 """turtle_world.draw_square's state machine driving this package's turtle model: squares of
-2 m, as tutorials/draw_square.cpp (ros_tutorials noetic-devel db63288) draws them; and
-mimic's Twist."""
+2 m, as tutorials/draw_square.cpp (ros_tutorials noetic-devel db63288, :22-163: 1 m/s,
+0.4 rad/s, goals within 0.1 m and 0.01 rad, PI 3.141592) draws them; and mimic's Twist
+(tutorials/mimic.cpp:17-31)."""
 import math
 from types import SimpleNamespace
 
