@@ -3,7 +3,7 @@
 Used by ``make demo`` and by the end-to-end tests in ``test/``:
 
 - :func:`virtual_display` starts Xvfb on a free display and waits until it answers;
-- :func:`private_master` picks a free port, so a run never meets another run's roscore;
+- :func:`private_master` reserves a port, so a run never meets another run's roscore;
 - :func:`roslaunch` starts a launch file with a log file and stops it (and its children);
 - :func:`run_while_node_lives` starts it again when its rviz died of a signal while starting;
 - :func:`launch_window` finds a window by title among those a launch's own processes opened;
@@ -20,12 +20,12 @@ import fcntl
 import os
 import shutil
 import signal
-import socket
 import subprocess
 import tempfile
 import time
 from typing import Callable, Dict, Iterator, List, Optional, Sequence, TypeVar
 
+from course_grader.master_port import PortReservation
 from course_grader.screenshot import windows as shown_windows
 from course_grader.platform_faults import signal_deaths
 
@@ -52,21 +52,18 @@ def wait_until(condition, timeout: float, what: str, interval: float = 0.1):
         time.sleep(interval)
 
 
-def free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return sock.getsockname()[1]
-
-
 @contextlib.contextmanager
 def private_master(ros_home: Optional[str] = None) -> Iterator[Dict[str, str]]:
-    """An environment whose ROS_MASTER_URI points at a free port (roslaunch starts the
-    master there) and whose ROS_HOME (logs) is ``ros_home`` or a temporary folder."""
+    """An environment whose ROS_MASTER_URI points at a port reserved for this run until the
+    block ends (roslaunch starts the master there: one found on the port would be used
+    silently, see course_grader.master_port) and whose ROS_HOME (logs) is ``ros_home`` or a
+    temporary folder."""
     with contextlib.ExitStack() as stack:
         if ros_home is None:
             ros_home = stack.enter_context(tempfile.TemporaryDirectory(prefix="ros_home_"))
+        port = stack.enter_context(PortReservation()).port
         env = dict(os.environ)
-        env["ROS_MASTER_URI"] = f"http://127.0.0.1:{free_port()}"
+        env["ROS_MASTER_URI"] = f"http://127.0.0.1:{port}"
         env["ROS_HOME"] = ros_home
         env["ROS_IP"] = "127.0.0.1"
         env.pop("ROS_HOSTNAME", None)

@@ -84,7 +84,7 @@ def test_our_solution_gets_full_marks(graded_solution):
     assert set(items) == {"layout", "xacro_yaml_gazebo", "world_contents", "ddrive_paused",
                           "flips", "arm_test", "step_floor_error", "step_reachable"}
     for item in items.values():
-        assert item["awarded"] == item["points"], item
+        assert item["awarded"] == item["points"], (item["id"], item["evidence"])
     assert "catkin_make: ok" in stdout and "resolves to" not in stdout
     assert "grade: 10 of 10 points" in stdout
     # the figures come from the simulator's truth, not from the student's nodes

@@ -11,7 +11,6 @@ import json
 import os
 import re
 import signal
-import socket
 import subprocess
 import time
 import xml.etree.ElementTree as ET
@@ -19,6 +18,7 @@ from typing import Dict, List, Optional, Tuple
 
 import rosgraph
 
+from course_grader.master_port import PortReservation
 from course_grader.results import Killed
 
 PYTHON = "/usr/bin/python3"   # the system interpreter, where ROS lives
@@ -44,12 +44,6 @@ class RunError(RuntimeError):
 class ScenarioLimit(RunError):
     """The scenario's checks ran out of its time: the grader could not finish measuring (a
     hung service, or a slow machine), so its items are for a teaching assistant to review."""
-
-
-def free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return sock.getsockname()[1]
 
 
 def wait_until(condition, timeout: float, what: str):
@@ -157,7 +151,8 @@ class Session:
         self.log_dir = log_dir
         self.limits = limits
         os.makedirs(log_dir, exist_ok=True)
-        self.port = free_port()
+        self.reservation = PortReservation()
+        self.port = self.reservation.port
         self.master_uri = f"http://127.0.0.1:{self.port}"
         self.tag = f"{os.getpid()}-{self.port}-{time.monotonic_ns()}"
         self.env = dict(env, ROS_MASTER_URI=self.master_uri, ROS_HOME=os.path.join(log_dir, "ros"),
@@ -193,6 +188,10 @@ class Session:
             except Exception:  # pylint: disable=broad-except
                 return False
         wait_until(answers, self.limits["startup"], f"roscore on port {self.port}")
+        # the master that answers must be this scenario's: one on the port already would
+        # run the guide's launch files among another run's nodes of the same names
+        if master.getPid() not in tagged(self.tag):
+            raise RunError(f"another run's ROS master answers on port {self.port}")
 
     def start_display(self) -> None:
         """A virtual screen (Xvfb) for windows the guide's launch opens (rviz, sliders).
@@ -295,6 +294,7 @@ class Session:
             fcntl.flock(lock, fcntl.LOCK_EX)
             self._stop_all([p for p in services if p[0] == "xvfb"])
         self.strays = kill_tagged(self.tag, self.limits["stop"])
+        self.reservation.release()
 
     def _stop_all(self, processes: List[tuple]) -> None:
         for _, process, _ in reversed(processes):
