@@ -7,12 +7,17 @@ robot's namespace, on :class:`SimulatedMotors` (interbotix_ros_core noetic 17284
 topic at 20 Hz. Parameters ``~motor_configs`` and ``~mode_configs`` (file paths, as
 ``xsarm_control.launch`` sets them); the joints' limits from ``/<robot_name>/robot_description``.
 
+``~simulator`` (false): drive the simulated arm's position controllers instead of fake joints
+(``simulator_joints``), waiting ``~simulator_timeout`` (30 s) for them.
+
 A request the driver cannot serve (an unknown joint or group, a wrong number of commands, a
 non-finite command) is refused with a message naming it, and the node goes on."""
 from __future__ import annotations
 
 import sys
 import threading
+from dataclasses import dataclass
+from typing import Optional
 
 import rospy
 from interbotix_xs_msgs.msg import JointGroupCommand, JointSingleCommand, JointTrajectoryCommand
@@ -20,12 +25,23 @@ from interbotix_xs_msgs.srv import (MotorGains, MotorGainsResponse, OperatingMod
                                     OperatingModesResponse, Reboot, RebootResponse,
                                     RegisterValues, RegisterValuesResponse, RobotInfo,
                                     RobotInfoResponse, TorqueEnable, TorqueEnableResponse)
+from node_params import ParameterError, parameter, positive, read
 from sensor_msgs.msg import JointState
 
 from xs_sdk_emulation import configs
 from xs_sdk_emulation.simulated_motors import TIMER_HZ, CommandError, SimulatedMotors
+from xs_sdk_emulation.simulator_joints import SimulatorJoints, SimulatorUnavailable
 
 LOG = "[xs_sdk] "
+
+
+@dataclass(frozen=True)
+class Settings:
+    """The workspace's own parameters (upstream's simulated driver drives no simulator)."""
+    simulator: bool = parameter(False, expected="true to drive the simulated arm's position "
+                                                "controllers, false for fake joints")
+    simulator_timeout: float = parameter(30.0, positive,
+                                         expected="s > 0 to wait for the simulator's controllers")
 
 
 def joint_limits(description_key: str):
@@ -44,8 +60,9 @@ def joint_limits(description_key: str):
 class XsSdkSim:
     """Serves the motors; construct after ``rospy.init_node`` (in the robot's namespace)."""
 
-    def __init__(self, motors: SimulatedMotors, limits):
-        self.motors, self.limits = motors, limits
+    def __init__(self, motors: SimulatedMotors, limits,
+                 simulator: Optional[SimulatorJoints] = None):
+        self.motors, self.limits, self.simulator = motors, limits, simulator
         self.trajectory_running = threading.Event()
         self.services = [
             rospy.Service("torque_enable", TorqueEnable, self._torque_enable),
@@ -60,11 +77,16 @@ class XsSdkSim:
             rospy.Subscriber("commands/joint_single", JointSingleCommand, self._single),
             rospy.Subscriber("commands/joint_trajectory", JointTrajectoryCommand,
                              self._trajectory, queue_size=1)]
-        self.states = rospy.Publisher(motors.config.joint_state_topic, JointState, queue_size=1)
-        self.timer = rospy.Timer(rospy.Duration(1.0 / TIMER_HZ), self._publish_states)
+        # on the simulated arm the simulator's joint_state_controller publishes the states
+        self.states = None if simulator else rospy.Publisher(
+            motors.config.joint_state_topic, JointState, queue_size=1)
+        self.timer = rospy.Timer(rospy.Duration(1.0 / TIMER_HZ), self._tick)
 
-    def _publish_states(self, _event) -> None:
+    def _tick(self, _event) -> None:
         names, positions = self.motors.tick()
+        if self.simulator is not None:
+            self.simulator.send(names, positions)
+            return
         self.states.publish(JointState(name=names, position=positions,
                                        header=rospy.Header(stamp=rospy.Time.now())))
 
@@ -183,8 +205,26 @@ def main() -> None:
         rospy.logfatal(LOG + "%s. Shutting down...", error)
         sys.exit(1)
     rospy.loginfo(LOG + "Loaded motor configs from '%s'.", rospy.get_param("~motor_configs"))
+    try:
+        settings = read(Settings)
+    except ParameterError as error:
+        rospy.logfatal(LOG + "%s. Shutting down...", error)
+        sys.exit(1)
     robot_name = rospy.get_namespace().strip("/")
-    XsSdkSim(SimulatedMotors(config), joint_limits(f"/{robot_name}/robot_description"))
-    rospy.loginfo(LOG + "InterbotixRobotXS is up (simulated motors: %s)",
+    limits = joint_limits(f"/{robot_name}/robot_description")
+    simulator, motors = None, SimulatedMotors(config)
+    if settings.simulator:
+        try:
+            simulator = SimulatorJoints(config, settings.simulator_timeout)
+        except (SimulatorUnavailable, rospy.ROSException) as error:
+            rospy.logfatal(LOG + "%s. Shutting down...", error)
+            sys.exit(1)
+        fingers = {g.left_finger: limits[g.left_finger][:2] for g in config.grippers.values()
+                   if limits and g.left_finger in limits}
+        motors = SimulatedMotors(config, finger_limits=fingers)
+        motors.state_index = simulator.state_indices()
+    XsSdkSim(motors, limits, simulator)
+    rospy.loginfo(LOG + "InterbotixRobotXS is up (%s: %s)",
+                  "the simulated arm's position controllers" if simulator else "fake joints",
                   ", ".join(config.joint_order))
     rospy.spin()

@@ -45,8 +45,12 @@ def _missing(name: str) -> CommandError:
 class SimulatedMotors:
     """Every joint of the motor config and its gripper fingers, at their sleep positions."""
 
-    def __init__(self, config: MotorConfig):
+    def __init__(self, config: MotorConfig,
+                 finger_limits: Optional[Dict[str, Tuple[float, float]]] = None):
+        """``finger_limits``: left finger -> (lower, upper); given, a gripper's horn stops
+        where its fingers reach them (the simulated arm's end stops)."""
         self.config = config
+        self.finger_limits = finger_limits
         self.lock = threading.Lock()
         self.names: List[str] = list(config.joint_order)
         self.positions: List[float] = [config.sleep_positions[n] for n in config.joint_order]
@@ -56,6 +60,7 @@ class SimulatedMotors:
             self.names += [gripper.left_finger, gripper.right_finger]
             self.positions += [distance, -distance]
         self.index = {name: i for i, name in enumerate(self.names)}
+        self.state_index = dict(self.index)     # get_robot_info's: where joint_states has them
         self.joint_modes: Dict[str, Mode] = {}
         self.group_modes: Dict[str, Mode] = {}
         self.commands: Dict[str, object] = {}   # joint -> a value, or waypoints (last first)
@@ -184,6 +189,11 @@ class SimulatedMotors:
             finger = value / 2.0
         else:
             angle, finger = value, self._finger(joint, value)
+        limits = (self.finger_limits or {}).get(gripper.left_finger)
+        if limits is not None and not limits[0] <= finger <= limits[1]:
+            # at an end stop: the fingers at their limit, the horn where that puts them
+            finger = min(max(finger, limits[0]), limits[1])
+            angle = horn_angle(2.0 * finger, gripper.horn_radius, gripper.arm_length)
         self.positions[self.index[joint]] = angle
         self.positions[self.index[gripper.left_finger]] = finger
         self.positions[self.index[gripper.right_finger]] = -finger
@@ -210,7 +220,8 @@ class SimulatedMotors:
             else:
                 info["joint_sleep_positions"].append(self.config.sleep_positions[joint])
             info["joint_names"].append(named)
-            info["joint_state_indices"].append(self.index[named])
+            # -1: a joint the simulator's joint states do not carry
+            info["joint_state_indices"].append(self.state_index.get(named, -1))
             if limits is not None:
                 if named not in limits:
                     raise CommandError(f"robot_description has no joint '{named}' with limits")

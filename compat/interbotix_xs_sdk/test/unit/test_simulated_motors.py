@@ -134,3 +134,23 @@ def test_a_broken_motor_config_is_named(tmp_path):
         configs.read(str(broken), str(tmp_path / "none.yaml"))
     with pytest.raises(configs.ConfigError, match="was not found"):
         configs.read(str(tmp_path / "missing.yaml"), "")
+
+
+def test_on_the_simulated_arm_the_fingers_stop_at_their_limits(config):
+    """With the fingers' limits (the simulator's end stops) a PWM command holds them at the
+    limit instead of turning the horn on past it (where the linkage would close them again)."""
+    motors = SimulatedMotors(config, finger_limits={"left_finger": (0.015, 0.037)})
+    motors.write_joint("gripper", 250)
+    for _ in range(40):
+        left, right = positions(motors, ["left_finger", "right_finger"])
+        assert 0.015 <= left <= 0.037 and right == -left
+    assert left == pytest.approx(0.037)
+    motors.write_joint("gripper", -250)
+    for _ in range(40):
+        left = positions(motors, ["left_finger"])[0]
+    assert left == pytest.approx(0.015)
+    # without the limits (upstream's simulated driver) the horn turns on
+    free = SimulatedMotors(config)
+    free.write_joint("gripper", 250)
+    fingers = [positions(free, ["left_finger"])[0] for _ in range(40)]
+    assert max(fingers) > 0.037 and fingers[-1] < max(fingers)

@@ -6,10 +6,12 @@ each result checked on the driver's joint states through robot_description's own
 (urdf_tools, not Modern Robotics: the module solves with that), and bad requests refused
 with the driver running on."""
 import math
+import subprocess
 import time
 import unittest
 
 import numpy as np
+import rospkg
 import rospy
 import rostest
 from interbotix_xs_msgs.msg import JointGroupCommand
@@ -110,6 +112,29 @@ class XsModulesOnTheDriver(unittest.TestCase):
             states = self.states()
             self.assertEqual([states[n] for n in ARM], [before[n] for n in ARM])
         self.assertEqual(info("group", "arm").num_joints, 4)
+
+    def test_7_a_driver_that_cannot_start_says_why_and_ends(self):
+        """In a namespace of their own: the real arm's driver, and the simulated driver told
+        to drive a simulator that is not there."""
+        config = rospkg.RosPack().get_path("interbotix_xsarm_control") + "/config/px100.yaml"
+        runs = {
+            "real": ["rosrun", "interbotix_xs_sdk", "xs_sdk", "__ns:=/real_arm"],
+            "no simulator": ["rosrun", "interbotix_xs_sdk", "xs_sdk_sim", "__ns:=/no_sim",
+                             f"_motor_configs:={config}", "_simulator:=true",
+                             "_simulator_timeout:=1"]}
+        said = {}
+        for name, command in runs.items():
+            run = subprocess.run(command, capture_output=True, text=True, timeout=60,
+                                 check=False)
+            self.assertEqual(run.returncode, 1, run.stdout + run.stderr)
+            said[name] = run.stdout + run.stderr
+        self.assertIn("the driver for the real arm (Dynamixel servos on /dev/ttyDXL) is not in "
+                      "this workspace", said["real"])
+        self.assertIn("waist_controller", said["no simulator"])
+        self.assertIn("use_position_controllers:=true", said["no simulator"])
+        # the driver under test is untouched
+        self.assertEqual(rospy.ServiceProxy("/px100/get_robot_info", RobotInfo)(
+            "group", "arm").num_joints, 4)
 
 
 if __name__ == "__main__":
