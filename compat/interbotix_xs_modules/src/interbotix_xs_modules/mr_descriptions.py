@@ -17,3 +17,16 @@ class px100:  # pylint: disable=invalid-name,too-few-public-methods
                   [0.0, 1.0, 0.0, 0.0],
                   [0.0, 0.0, 1.0, 0.1931],
                   [0.0, 0.0, 0.0, 1.0]])
+
+
+class wx200:  # pylint: disable=invalid-name,too-few-public-methods
+    """WidowX 200: waist, shoulder, elbow, wrist_angle, wrist_rotate."""
+    Slist = np.array([[0.0, 0.0, 1.0, 0.0, 0.0, 0.0],
+                      [0.0, 1.0, 0.0, -0.11065, 0.0, 0.0],
+                      [0.0, 1.0, 0.0, -0.31065, 0.0, 0.05],
+                      [0.0, 1.0, 0.0, -0.31065, 0.0, 0.25],
+                      [1.0, 0.0, 0.0, 0.0, 0.31065, 0.0]]).T
+    M = np.array([[1.0, 0.0, 0.0, 0.408575],
+                  [0.0, 1.0, 0.0, 0.0],
+                  [0.0, 0.0, 1.0, 0.31065],
+                  [0.0, 0.0, 0.0, 1.0]])

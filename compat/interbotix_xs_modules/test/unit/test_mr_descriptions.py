@@ -1,5 +1,5 @@
-"""Interbotix's Modern Robotics numbers for the px100 (mr_descriptions) describe the arm this
-workspace's interbotix_xsarm_descriptions gives, so that the poses InterbotixManipulatorXS
+"""Interbotix's Modern Robotics numbers for the px100 and the wx200 (mr_descriptions) describe
+the arms this workspace's interbotix_xsarm_descriptions gives, so that the poses InterbotixManipulatorXS
 solves for are where the described (and simulated) gripper goes: forward kinematics by the
 product of exponentials against the URDF's own chain, base_link to ee_gripper_link, at
 zero and at random joint values within the limits."""
@@ -10,37 +10,40 @@ import numpy as np
 import pytest
 import rospkg
 
-from interbotix_xs_modules import mr_descriptions
 from interbotix_xs_modules.arm import robot_description
 from urdf_tools.kinematics import link_transform
 from urdf_tools.xacro_loader import load
 
-ARM = ["waist", "shoulder", "elbow", "wrist_angle"]
+ARMS = {"px100": ["waist", "shoulder", "elbow", "wrist_angle"],
+        "wx200": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"]}
 
 
-@pytest.fixture(scope="module")
-def px100():
+def described(model):
     path = os.path.join(rospkg.RosPack().get_path("interbotix_xsarm_descriptions"), "urdf",
-                        "px100.urdf.xacro")
-    return load(path, {"robot_name": "px100"})
+                        f"{model}.urdf.xacro")
+    return load(path, {"robot_name": model})
 
 
-def test_m_is_the_grippers_pose_with_every_joint_at_zero(px100):
-    home = link_transform(px100, "px100/base_link", "px100/ee_gripper_link", {})
-    assert np.allclose(mr_descriptions.px100.M, home, atol=1e-9)
+@pytest.mark.parametrize("model", sorted(ARMS))
+def test_m_is_the_grippers_pose_with_every_joint_at_zero(model):
+    home = link_transform(described(model), f"{model}/base_link", f"{model}/ee_gripper_link", {})
+    assert np.allclose(robot_description(model).M, home, atol=1e-9)
 
 
-def test_the_product_of_exponentials_is_the_urdfs_chain(px100):
+@pytest.mark.parametrize("model", sorted(ARMS))
+def test_the_product_of_exponentials_is_the_urdfs_chain(model):
+    urdf, kinematics, joints = described(model), robot_description(model), ARMS[model]
     rng = np.random.default_rng(7)
     for _ in range(200):
-        values = [rng.uniform(px100.joints[n].limit.lower, px100.joints[n].limit.upper)
-                  for n in ARM]
-        expected = link_transform(px100, "px100/base_link", "px100/ee_gripper_link",
-                                  dict(zip(ARM, values)))
-        got = mr.FKinSpace(mr_descriptions.px100.M, mr_descriptions.px100.Slist, values)
+        values = [rng.uniform(urdf.joints[n].limit.lower, urdf.joints[n].limit.upper)
+                  for n in joints]
+        expected = link_transform(urdf, f"{model}/base_link", f"{model}/ee_gripper_link",
+                                  dict(zip(joints, values)))
+        got = mr.FKinSpace(kinematics.M, kinematics.Slist, values)
         assert np.allclose(got, expected, atol=1e-9), values
 
 
 def test_an_arm_without_a_description_is_named():
-    with pytest.raises(ValueError, match="no kinematics for robot_model 'wx200' \\(it has: px100\\)"):
-        robot_description("wx200")
+    with pytest.raises(ValueError, match="no kinematics for robot_model 'vx300s' \\(it has: "
+                                         "px100, wx200\\)"):
+        robot_description("vx300s")
