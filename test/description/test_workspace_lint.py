@@ -52,6 +52,13 @@ LAUNCH_ARGUMENTS = {
     "compat/interbotix_xsarm_moveit/launch/move_group.launch": PX100 + ["robot_name:=px100"],
     "compat/interbotix_xsarm_moveit/launch/planning_context.launch": PX100 + ["robot_name:=px100"],
     "compat/interbotix_xsarm_ros_control/launch/xsarm_ros_control.launch": PX100,
+    "compat/interbotix_xsarm_control/launch/xsarm_control.launch": PX100 + ["use_sim:=true"],
+    # the 2020 course's files name the robot by robot_name
+    "compat/interbotix_descriptions/launch/description.launch": ["robot_name:=px100"],
+    "compat/interbotix_gazebo/launch/gazebo.launch": ["robot_name:=px100"],
+    "compat/interbotix_moveit/launch/interbotix_moveit.launch": ["robot_name:=px100",
+                                                                 "use_fake:=true"],
+    "compat/interbotix_sdk/launch/arm_run.launch": ["robot_name:=px100"],
 }
 
 
@@ -96,7 +103,8 @@ def test_other_interbotix_models_are_refused_by_name(xacro_file):
     model = os.path.basename(xacro_file).split(".")[0]
     assert expanded.returncode != 0
     assert f"robot_model:={model}: this workspace's interbotix_xsarm_descriptions describes " \
-        "the px100 only (robot_model:=px100)" in expanded.stderr, expanded.stderr
+        "the X-series arms px100, px150, rx150, rx200, wx200, wx250, wx250s, vx250, vx300 " \
+        "and vx300s only" in expanded.stderr, expanded.stderr
 
 
 @pytest.mark.parametrize("urdf", [p for p in URDF_FILES if "/e2e/data/" not in p])

@@ -1,5 +1,5 @@
-"""Interbotix's Modern Robotics numbers for the px100 and the wx200 (mr_descriptions) describe
-the arms this workspace's interbotix_xsarm_descriptions gives, so that the poses InterbotixManipulatorXS
+"""Interbotix's Modern Robotics numbers for the X-series arms (mr_descriptions) describe the
+arms this workspace's interbotix_xsarm_descriptions gives, so that the poses InterbotixManipulatorXS
 solves for are where the described (and simulated) gripper goes: forward kinematics by the
 product of exponentials against the URDF's own chain, base_link to ee_gripper_link, at
 zero and at random joint values within the limits."""
@@ -15,7 +15,15 @@ from urdf_tools.kinematics import link_transform
 from urdf_tools.xacro_loader import load
 
 ARMS = {"px100": ["waist", "shoulder", "elbow", "wrist_angle"],
-        "wx200": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"]}
+        "px150": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"],
+        "rx150": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"],
+        "rx200": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"],
+        "wx200": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"],
+        "wx250": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"],
+        "wx250s": ["waist", "shoulder", "elbow", "forearm_roll", "wrist_angle", "wrist_rotate"],
+        "vx250": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"],
+        "vx300": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"],
+        "vx300s": ["waist", "shoulder", "elbow", "forearm_roll", "wrist_angle", "wrist_rotate"]}
 
 
 def described(model):
@@ -44,6 +52,7 @@ def test_the_product_of_exponentials_is_the_urdfs_chain(model):
 
 
 def test_an_arm_without_a_description_is_named():
-    with pytest.raises(ValueError, match="no kinematics for robot_model 'vx300s' \\(it has: "
-                                         "px100, wx200\\)"):
-        robot_description("vx300s")
+    with pytest.raises(ValueError, match="no kinematics for robot_model 'wx300' \\(it has: "
+                                         "px100, px150, rx150, rx200, vx250, vx300, vx300s, "
+                                         "wx200, wx250, wx250s\\)"):
+        robot_description("wx300")

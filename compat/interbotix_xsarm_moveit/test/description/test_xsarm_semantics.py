@@ -14,7 +14,15 @@ from moveit_core.planning_scene import PlanningScene
 from urdf_tools.xacro_loader import expand
 
 ARMS = {"px100": ["waist", "shoulder", "elbow", "wrist_angle"],
-        "wx200": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"]}
+        "px150": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"],
+        "rx150": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"],
+        "rx200": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"],
+        "wx200": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"],
+        "wx250": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"],
+        "wx250s": ["waist", "shoulder", "elbow", "forearm_roll", "wrist_angle", "wrist_rotate"],
+        "vx250": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"],
+        "vx300": ["waist", "shoulder", "elbow", "wrist_angle", "wrist_rotate"],
+        "vx300s": ["waist", "shoulder", "elbow", "forearm_roll", "wrist_angle", "wrist_rotate"]}
 STATES = ("Home", "Upright", "Sleep")
 RANDOM_STATES = 400
 

@@ -21,7 +21,11 @@ from tf.transformations import euler_from_matrix, random_rotation_matrix
 from moveit_core.planning_scene import PlanningScene, SceneError, pose_matrix
 
 GOAL_SAMPLES = 4            # valid IK goals gathered for a search (one for a straight line)
-MAX_IK_TRIES = 40           # IK attempts for one goal set
+# IK attempts for one goal set, within the planning time: MoveIt's max_goal_sampling_attempts
+# (planning_context_manager.cpp l. 241, noetic-devel: 1000). An unreachable pose so takes the
+# planning time (or 1000 solver timeouts) to be refused, as in MoveIt; a reachable one found
+# on a narrow branch (a 6-axis arm's singular wrist) is found
+MAX_IK_TRIES = 1000
 
 
 class GoalError(ValueError):

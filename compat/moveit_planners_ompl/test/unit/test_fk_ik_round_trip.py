@@ -22,9 +22,13 @@ from moveit_planners_ompl.goals import pose_goals, satisfied
 
 DATA = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
     os.path.abspath(__file__))))), "moveit_core", "test", "data")
-STATES = 50            # random collision-free states per arm
+STATES = 200           # random collision-free states per arm
 DRAWS = 2000           # states drawn at most to find them
-GOAL_TIME = 1.0        # s: the goal sampling's deadline per pose
+# s: the goal sampling's deadline per pose: the planning time a MoveGroupInterface
+# (moveit_commander) allows by default (DEFAULT_ALLOWED_PLANNING_TIME,
+# move_group_interface.cpp, noetic-devel); a pose at a 6-axis arm's wrist singularity, free
+# on one branch only, takes some 0.5 s
+GOAL_TIME = 5.0
 POSITION_TOLERANCE = 1e-4       # m: moveit_commander's goal_position_tolerance
 ORIENTATION_TOLERANCE = 1e-3    # rad: its goal_orientation_tolerance
 ARMS = [("px100", "interbotix_arm", "px100/ee_gripper_link"),

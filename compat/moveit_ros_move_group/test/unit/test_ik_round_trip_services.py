@@ -1,0 +1,185 @@
+"""FK -> IK round trip at move_group's services (issue 32): for 200 random collision-free
+states of a 4-joint arm (Interbotix's px100), a 5-joint arm (the wx200) and 6-joint arms (the
+wx250s and a UR-type arm), the pose compute_fk gives for the group's tip is answered by
+compute_ik (collision-aware, seeded at the default state, not at the state the pose came
+from) with a solution whose tip
+is at that pose (1 mm, 0.01 rad); and a Cartesian path (compute_cartesian_path) from each
+of 50 states moving the tip 1 cm up, orientation kept, which a 4- or 5-joint arm can follow,
+is followed in full when its end is reachable. The arms' configs as their MoveIt packages
+load them: Interbotix's kinematics.yaml (position_only_ik false) for the X-series arms, and
+the px100 with position_only_ik true as the 2020 config has it (the position is checked)."""
+import math
+import os
+import time
+
+import numpy as np
+import pytest
+import rospkg
+import rospy
+import yaml
+from moveit_msgs.msg import MoveItErrorCodes
+from moveit_msgs.srv import (GetCartesianPathRequest, GetPositionFKRequest,
+                             GetPositionIKRequest)
+
+from moveit_core.planning_scene import PlanningScene
+from moveit_ros_move_group import cartesian_path, kinematics_service
+from moveit_ros_move_group.context import from_parameters
+from moveit_ros_move_group.conversions import matrix_pose
+from urdf_tools.xacro_loader import expand
+
+STATES = 200
+CARTESIAN_STATES = 50
+DRAWS = 5000
+POSITION_TOLERANCE = 0.001      # m
+ORIENTATION_TOLERANCE = 0.01    # rad
+LIFT = 0.01                     # m: the Cartesian paths' move up
+# s: the request's timeout, as scripts set it (0 would be the solver's 5 ms, one try from
+# the seed and a few random restarts in MoveIt's KDL too)
+IK_TIMEOUT = 0.1
+DATA = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.abspath(__file__))))), "moveit_core", "test", "data")
+
+
+def interbotix(model_name, position_only=False):
+    packages = rospkg.RosPack()
+    moveit = packages.get_path("interbotix_xsarm_moveit")
+    with open(os.path.join(moveit, "config", "kinematics.yaml"), encoding="utf-8") as stream:
+        kinematics = yaml.safe_load(stream)
+    kinematics["interbotix_arm"]["position_only_ik"] = position_only
+    return {"robot_description": expand(os.path.join(
+                packages.get_path("interbotix_xsarm_descriptions"), "urdf",
+                f"{model_name}.urdf.xacro"), {"robot_name": model_name}),
+            "robot_description_semantic": expand(os.path.join(
+                moveit, "config", "srdf", f"{model_name}.srdf.xacro"),
+                {"robot_name": model_name}),
+            "robot_description_kinematics": kinematics}, "interbotix_arm"
+
+
+def six_axis_arm():
+    with open(os.path.join(DATA, "six_axis_arm.urdf"), encoding="utf-8") as urdf, \
+            open(os.path.join(DATA, "six_axis_arm.srdf"), encoding="utf-8") as srdf:
+        return {"robot_description": urdf.read(), "robot_description_semantic": srdf.read(),
+                "robot_description_kinematics": {"manipulator": {
+                    "kinematics_solver": "kdl_kinematics_plugin/KDLKinematicsPlugin",
+                    "kinematics_solver_timeout": 0.005}}}, "manipulator"
+
+
+ARMS = {"px100": lambda: interbotix("px100"), "wx200": lambda: interbotix("wx200"),
+        "wx250s": lambda: interbotix("wx250s"),
+        "six_axis_arm": six_axis_arm,
+        # the 2020 config's (interbotix_moveit): the tip's position only
+        "px100 position_only_ik": lambda: interbotix("px100", position_only=True)}
+
+
+class Scene:  # pylint: disable=too-few-public-methods
+    """What move_group's scene monitor hands the services: the planning scene (the robot
+    alone here) at the current state."""
+
+    def __init__(self, model):
+        self.scene = PlanningScene(model)
+
+    def snapshot(self):
+        return self.scene
+
+
+def free_states(context, group, count, rng):
+    model = context.model
+    scene = PlanningScene(model)
+    joints = context.solver(group).joints
+    start = model.default_positions()
+    found, draws = [], 0
+    while len(found) < count:
+        draws += 1
+        assert draws <= DRAWS, f"fewer than {count} collision-free states in {DRAWS}"
+        state = dict(start, **{j: rng.uniform(model.bounds[j].lower, model.bounds[j].upper)
+                               if model.bounds[j].bounded else rng.uniform(-math.pi, math.pi)
+                               for j in joints})
+        if not scene.contacts(state, group):
+            found.append(state)
+    return found
+
+
+def turned(a, b):
+    return math.acos(max(-1.0, min(1.0, (np.trace(a[:3, :3].T @ b[:3, :3]) - 1) / 2)))
+
+
+def fk(context, tip, state):
+    return context.model.link_poses(state)[tip]
+
+
+@pytest.fixture(scope="module", params=sorted(ARMS))
+def arm(request):
+    values, group = ARMS[request.param]()
+    context = from_parameters(lambda name: values[name])
+    return request.param, context, group, context.solver(group).tip
+
+
+def test_compute_ik_answers_the_pose_of_every_free_state(arm):
+    name, context, group, tip = arm
+    monitor = Scene(context.model)
+    rng = np.random.default_rng(11)
+    unsolved, seconds = [], []
+    for state in free_states(context, group, STATES, rng):
+        request = GetPositionIKRequest()
+        request.ik_request.group_name = group
+        request.ik_request.avoid_collisions = True
+        request.ik_request.timeout = rospy.Duration(IK_TIMEOUT)
+        request.ik_request.pose_stamped.header.frame_id = context.model.model_frame
+        fk_request = GetPositionFKRequest(fk_link_names=[tip])
+        fk_request.robot_state.joint_state.name = list(state)
+        fk_request.robot_state.joint_state.position = list(state.values())
+        pose = kinematics_service.compute_fk(context, fk_request).pose_stamped[0]
+        request.ik_request.pose_stamped.pose = pose.pose
+        began = time.monotonic()
+        answer = kinematics_service.compute_ik(context, request, monitor)
+        seconds.append(time.monotonic() - began)
+        assert not request.ik_request.robot_state.joint_state.name   # the default seed
+        if answer.error_code.val != MoveItErrorCodes.SUCCESS:
+            unsolved.append({j: round(state[j], 3) for j in context.solver(group).joints})
+            continue
+        solution = dict(zip(answer.solution.joint_state.name, answer.solution.joint_state.position))
+        wanted, got = fk(context, tip, state), fk(context, tip, solution)
+        assert np.linalg.norm(got[:3, 3] - wanted[:3, 3]) < POSITION_TOLERANCE, (name, state)
+        if "position_only" not in name:
+            assert turned(got, wanted) < ORIENTATION_TOLERANCE, (name, state)
+    print(f"{name}: compute_ik {STATES - len(unsolved)} of {STATES}; median "
+          f"{1000 * np.median(seconds):.1f} ms, 95th percentile "
+          f"{1000 * np.percentile(seconds, 95):.1f} ms")
+    assert unsolved == [], f"{name}: compute_ik found no solution for: {unsolved}"
+
+
+def test_a_cartesian_lift_is_followed_in_full(arm):
+    name, context, group, tip = arm
+    monitor = Scene(context.model)
+    solver = context.solver(group)
+    rng = np.random.default_rng(12)
+    cut, followed = [], 0
+    for state in free_states(context, group, CARTESIAN_STATES, rng):
+        start = fk(context, tip, state)
+        end = start.copy()
+        end[:3, 3] += [0.0, 0.0, LIFT]
+        base = context.model.link_poses(state)[solver.base]
+        reachable = solver.inverse(np.linalg.inv(base) @ end, [state[j] for j in solver.joints],
+                                   None)
+        if reachable is None or monitor.scene.contacts(dict(state, **solver.state(reachable)),
+                                                       group):
+            continue         # the lift leaves the arm's reach: not a path it can follow
+        request = GetCartesianPathRequest(group_name=group, max_step=0.002,
+                                          avoid_collisions=True)
+        request.header.frame_id = context.model.model_frame
+        request.start_state.joint_state.name = list(state)
+        request.start_state.joint_state.position = list(state.values())
+        request.waypoints = [matrix_pose(end)]
+        answer = cartesian_path.compute_cartesian_path(context, monitor, request)
+        if answer.fraction < 1.0:
+            cut.append((round(answer.fraction, 2), {j: round(state[j], 3) for j in solver.joints}))
+            continue
+        last = answer.solution.joint_trajectory.points[-1].positions
+        reached = fk(context, tip, dict(state, **dict(zip(solver.joints, last))))
+        assert np.linalg.norm(reached[:3, 3] - end[:3, 3]) < POSITION_TOLERANCE
+        if "position_only" not in name:
+            assert turned(reached, end) < ORIENTATION_TOLERANCE
+        followed += 1
+    print(f"{name}: {followed} Cartesian lifts followed in full, {len(cut)} cut short")
+    assert cut == [], f"{name}: Cartesian lifts cut short: {cut}"
+    assert followed >= CARTESIAN_STATES // 2, "most lifts should stay within reach"
