@@ -38,6 +38,9 @@ The scene (tools/bench/): a closed hall with 40 static objects and an RB1-class 
                                 fake controllers) up after roslaunch; plan_kinematic_path
                                 for 200 random reachable pose targets in the table scene
                                 (median, 95th percentile, share planned); KDL IK per call
+  IK round trip                 tools/bench/ik_cost.py: compute_ik on the FK poses of 200
+                                random free states of the px100, wx200 and wx250s (4, 5, 6
+                                joints): ms per solve (median, 95th percentile), share solved
 
 The master is started first so that its start-up is not counted. Results also go to
 bench_results/bench.txt.
@@ -58,6 +61,7 @@ BENCH = os.path.join(REPO, "tools", "bench")
 OUTPUT = os.path.join(REPO, "bench_results")
 sys.path.insert(0, BENCH)
 import laser_cost  # noqa: E402  (tools/bench/ is not a package)
+import ik_cost  # noqa: E402
 import moveit_cost  # noqa: E402
 
 WINDOW = 10.0  # wall seconds each rate is measured over
@@ -493,6 +497,8 @@ def main() -> int:
     lasers = laser_cost.measure()
     print("bench: camera images...", flush=True)
     images = measure_images()
+    print("bench: IK round trips...", flush=True)
+    iks = ik_cost.measure()
     one, eight = crowd[1]["cpu_ms_per_sim_s"], crowd[8]["cpu_ms_per_sim_s"]
     rows = [
         ("max real-time factor, ROS, 1 ms step", fast["rtf"], "{:.1f}"),
@@ -532,6 +538,11 @@ def main() -> int:
         ("move_group planning, targets planned (%)", moveit["success"], "{:.1f}"),
         ("KDL IK, median (ms)", moveit["ik"], "{:.2f}"),
     ]
+    for arm, ik in iks.items():
+        rows += [(f"compute_ik round trip, {arm} ({ik['joints']} joints): median (ms)",
+                  ik["median"], "{:.1f}"),
+                 (f"compute_ik round trip, {arm}: 95th percentile (ms)", ik["p95"], "{:.1f}"),
+                 (f"compute_ik round trip, {arm}: solved (%)", ik["solved"], "{:.1f}")]
     width = max(len(name) for name, _, _ in rows)
     lines = ["sim_bridge benchmark: 40 static objects, RB1-class robots (diff drive, 720-beam "
              f"laser at 20 Hz), {WINDOW:g} s windows; laser kernel: {lasers['kernel']}", "",
