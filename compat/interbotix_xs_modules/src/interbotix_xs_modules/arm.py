@@ -1,4 +1,5 @@
-"""``InterbotixManipulatorXS`` and the arm's interface (upstream's ``arm.py``, noetic af96d28):
+"""``InterbotixManipulatorXS`` and the arm's interface (upstream's ``arm.py``, noetic af96d28;
+lines cited are that file's):
 joint commands through the driver's ``commands/joint_group`` and ``joint_single`` with the
 group's time-based profile (``Profile_Velocity`` = moving time in ms, ``Profile_Acceleration``
 = acceleration time in ms); end-effector poses solved by Modern Robotics' ``IKinSpace``
@@ -19,8 +20,8 @@ import interbotix_xs_modules.mr_descriptions as mrd
 from interbotix_xs_modules.core import InterbotixRobotXSCore
 from interbotix_xs_modules.gripper import InterbotixGripperXSInterface
 
-IK_TOLERANCES = (0.001, 0.001)      # rad, m: upstream's IKinSpace eomg, ev
-GUESS_WAISTS_DEGREES = (0.0, -120.0, 120.0)
+IK_TOLERANCES = (0.001, 0.001)      # rad, m: upstream's IKinSpace eomg, ev (arm.py l. 196)
+GUESS_WAISTS_DEGREES = (0.0, -120.0, 120.0)     # the initial guesses' waists (l. 48-50)
 
 
 class InterbotixManipulatorXS:  # pylint: disable=too-few-public-methods
@@ -84,7 +85,7 @@ class InterbotixArmXSInterface:  # pylint: disable=too-many-instance-attributes
         self.T_sb = mr.FKinSpace(self.robot_des.M, self.robot_des.Slist, self.joint_commands)
 
     def set_trajectory_time(self, moving_time=None, accel_time=None):
-        """The group's profile registers, written only when they change."""
+        """The group's profile registers in ms, written only when they change (l. 81-87)."""
         if moving_time is not None and moving_time != self.moving_time:
             self.moving_time = moving_time
             self.core.srv_set_reg(cmd_type="group", name=self.group_name, reg="Profile_Velocity",
@@ -96,7 +97,7 @@ class InterbotixArmXSInterface:  # pylint: disable=too-many-instance-attributes
 
     # --- limits ------------------------------------------------------------------------------
     def _joint_within_limits(self, index, theta, current, warn):
-        """Position limits on ``theta`` (rounded down to the mrad, as upstream's) and the speed
+        """Position limits on ``theta`` (cut to the mrad, as upstream's: l. 93) and the speed
         of going from ``current`` over the moving time."""
         theta = int(theta * 1000) / 1000.0
         lower = self.group_info.joint_lower_limits[index]
@@ -191,7 +192,8 @@ class InterbotixArmXSInterface:  # pylint: disable=too-many-instance-attributes
     def set_ee_pose_components(self, x=0, y=0, z=0, roll=0, pitch=0, yaw=None,  # pylint: disable=too-many-arguments
                                custom_guess=None, execute=True, moving_time=None,
                                accel_time=None, blocking=True):
-        """An arm of fewer than 6 joints (or a yaw of None) faces the point: yaw = atan2(y, x)."""
+        """An arm of fewer than 6 joints (or a yaw of None) faces the point: yaw = atan2(y, x)
+        (l. 239-241)."""
         if self.group_info.num_joints < 6 or yaw is None:
             yaw = math.atan2(y, x)
         T_sd = np.identity(4)  # pylint: disable=invalid-name

@@ -14,7 +14,7 @@ from interbotix_xs_msgs.srv import (MotorGains, OperatingModes, Reboot, Register
 from sensor_msgs.msg import JointState
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
-DRIVER_WAIT = 5.0           # s: upstream's wait for set_operating_modes
+DRIVER_WAIT = 5.0           # s: upstream's wait for set_operating_modes (core.py l. 30)
 JOINT_STATES_WAIT = 10.0    # s (wall)
 SERVICES = (("set_operating_modes", OperatingModes), ("set_motor_pid_gains", MotorGains),
             ("set_motor_registers", RegisterValues), ("get_motor_registers", RegisterValues),
@@ -67,7 +67,7 @@ class InterbotixRobotXSCore:
                 sys.exit(1)
             time.sleep(0.01)
         self.js_index_map = dict(zip(self.joint_states.name, range(len(self.joint_states.name))))
-        rospy.sleep(0.5)    # upstream's: the publishers' connections settle
+        rospy.sleep(0.5)    # upstream's (l. 59): the publishers' connections settle
         print(f"Robot Name: {self.robot_name}\nRobot Model: {robot_model}")
         print("Initialized InterbotixRobotXSCore!\n")
 

@@ -1,13 +1,13 @@
 """The X-series gripper driven by PWM (upstream's ``gripper.py``, noetic af96d28): ``open``
 and ``close`` send +-effort, effort = lower + pressure * (upper - lower) (150 and 350 by
-default, pressure 0.5: 250), and a 50 Hz timer sends 0 once the left finger reaches its
-limit from robot_description."""
+default, pressure 0.5: 250; l. 27, 36), and a 50 Hz timer (l. 40) sends 0 once the left
+finger reaches its limit from robot_description."""
 import rospy
 from interbotix_xs_msgs.msg import JointSingleCommand
 
 from interbotix_xs_modules.core import InterbotixRobotXSCore
 
-STATE_PERIOD = 0.02     # s: upstream's gripper_state timer
+STATE_PERIOD = 0.02     # s: upstream's gripper_state timer (gripper.py l. 40)
 
 
 class InterbotixGripperXS:  # pylint: disable=too-few-public-methods

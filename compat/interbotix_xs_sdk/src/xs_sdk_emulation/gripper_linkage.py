@@ -1,6 +1,6 @@
 """The X-series gripper's linkage: a servo horn of radius r turns, an arm of length L slides
-each finger. Upstream's formulas (``xs_sdk_sim``'s ``robot_convert_angular_position_to_linear``
-and ``robot_convert_linear_position_to_radian``): a finger's distance from the horn's centre
+each finger. Upstream's formulas (``xs_sdk_sim``'s ``robot_convert_angular_position_to_linear``,
+l. 230-236, and ``robot_convert_linear_position_to_radian``, l. 219-224): a finger's distance from the horn's centre
 at horn angle a is r sin a + sqrt(L^2 - (r^2 - r^2 sin^2 a)); the angle for a distance d
 between the fingers is pi/2 - acos((r^2 + (d/2)^2 - L^2) / (r d))."""
 import math

@@ -101,7 +101,7 @@ class XsSdkSim:
 
     def _torque_enable(self, request):
         def serve(req):
-            self.motors._joints(req.cmd_type, req.name)  # pylint: disable=protected-access
+            self.motors.joints(req.cmd_type, req.name)
             rospy.loginfo(LOG + "The '%s' %s was torqued %s.", req.name,
                           "group" if req.cmd_type == "group" else "joint",
                           "on" if req.enable else "off")
@@ -110,7 +110,7 @@ class XsSdkSim:
 
     def _reboot(self, request):
         def serve(req):
-            self.motors._joints(req.cmd_type, req.name)  # pylint: disable=protected-access
+            self.motors.joints(req.cmd_type, req.name)
             rospy.loginfo(LOG + "The '%s' %s was rebooted.", req.name,
                           "group" if req.cmd_type == "group" else "joint")
             return RebootResponse()
@@ -131,7 +131,7 @@ class XsSdkSim:
 
     def _pid_gains(self, request):
         def serve(req):   # no motor firmware to write them to (as upstream's simulator)
-            self.motors._joints(req.cmd_type, req.name)  # pylint: disable=protected-access
+            self.motors.joints(req.cmd_type, req.name)
             return MotorGainsResponse()
         return self._served(serve, request)
 
@@ -186,9 +186,11 @@ class XsSdkSim:
                     self.motors.write_joint(message.name, values[0])
                 if number < len(points) - 1:
                     rospy.sleep(point.time_from_start - (rospy.Time.now() - start))
-        except (CommandError, IndexError) as error:
-            rospy.logerr(LOG + "trajectory for '%s' stopped at a point: %s", message.name,
-                         error or f"it has no {field}")
+        except CommandError as error:
+            rospy.logerr(LOG + "trajectory for '%s' stopped at a point: %s", message.name, error)
+        except IndexError:
+            rospy.logerr(LOG + "trajectory for '%s' stopped at a point that has no %s",
+                         message.name, field)
         finally:
             self.trajectory_running.clear()
 
@@ -221,8 +223,8 @@ def main() -> None:
             sys.exit(1)
         fingers = {g.left_finger: limits[g.left_finger][:2] for g in config.grippers.values()
                    if limits and g.left_finger in limits}
-        motors = SimulatedMotors(config, finger_limits=fingers)
-        motors.state_index = simulator.state_indices()
+        motors = SimulatedMotors(config, finger_limits=fingers,
+                                 state_order=simulator.state_order)
     XsSdkSim(motors, limits, simulator)
     rospy.loginfo(LOG + "InterbotixRobotXS is up (%s: %s)",
                   "the simulated arm's position controllers" if simulator else "fake joints",

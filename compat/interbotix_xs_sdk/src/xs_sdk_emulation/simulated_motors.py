@@ -2,17 +2,19 @@
 driver's timer as Interbotix's simulated driver moves them (interbotix_ros_core noetic
 172841f, ``interbotix_xs_sdk/scripts/xs_sdk_sim``):
 
-- 20 Hz (``timer_hz``); a position command whose ``profile_velocity`` (the time-based
-  profile's moving time, ms) exceeds 300 (``move_thresh``) is cut into
+- 20 Hz (``timer_hz``, l. 19, 46); a position command whose ``profile_velocity`` (the
+  time-based profile's moving time, ms) exceeds 300 (``move_thresh``, l. 21) is cut into
   round(profile_velocity / 1000 * 20 + 1) evenly spaced waypoints from where the joint is,
-  one a tick; a shorter one is reached at the next tick (``robot_write_joint_command``);
+  one a tick; a shorter one is reached at the next tick (``robot_write_joint_command``,
+  l. 209-213);
 - ``velocity`` mode adds command / 20 a tick, ``pwm`` and ``current`` command / 2000, until
-  a command of 0 (``robot_update_joint_states``);
+  a command of 0 (``robot_update_joint_states``, l. 457-466);
 - a gripper's horn angle moves its fingers through the linkage (``gripper_linkage``), the
   right finger at minus the left; ``linear_position`` commands the distance between them.
 
 Nothing here talks to ROS: ``sim_node`` serves it. Bad commands raise :class:`CommandError`
-with the real driver's words (``xs_sdk_obj.cpp``) where it has them."""
+with the real driver's words (``src/xs_sdk_obj.cpp``: "does not exist" l. 71, 181, 220;
+"Number of commands" l. 239; "Invalid command for argument" l. 73, 146) where it has them."""
 from __future__ import annotations
 
 import math
@@ -24,9 +26,9 @@ import numpy as np
 from xs_sdk_emulation.configs import Mode, MotorConfig
 from xs_sdk_emulation.gripper_linkage import finger_distance, horn_angle
 
-TIMER_HZ = 20               # xs_sdk_sim: self.timer_hz
-MOVE_THRESHOLD_MS = 300     # xs_sdk_sim: self.move_thresh
-EFFORT_SCALE = 2000.0       # xs_sdk_sim: pwm and current commands move command / 2000 a tick
+TIMER_HZ = 20               # xs_sdk_sim l. 19: self.timer_hz
+MOVE_THRESHOLD_MS = 300     # xs_sdk_sim l. 21: self.move_thresh
+EFFORT_SCALE = 2000.0       # xs_sdk_sim l. 465: pwm and current move command / 2000 a tick
 MODES = ("position", "ext_position", "current_based_position", "linear_position",
          "velocity", "pwm", "current")          # xs_sdk_obj.cpp robot_set_joint_operating_mode
 PROFILE_REGISTERS = {"Profile_Velocity": "profile_velocity",
@@ -46,9 +48,12 @@ class SimulatedMotors:
     """Every joint of the motor config and its gripper fingers, at their sleep positions."""
 
     def __init__(self, config: MotorConfig,
-                 finger_limits: Optional[Dict[str, Tuple[float, float]]] = None):
+                 finger_limits: Optional[Dict[str, Tuple[float, float]]] = None,
+                 state_order: Optional[Sequence[str]] = None):
         """``finger_limits``: left finger -> (lower, upper); given, a gripper's horn stops
-        where its fingers reach them (the simulated arm's end stops)."""
+        where its fingers reach them (the simulated arm's end stops). ``state_order``: the
+        joint states' names when another publishes them (the simulator), for get_robot_info's
+        indices; else these motors' own order."""
         self.config = config
         self.finger_limits = finger_limits
         self.lock = threading.Lock()
@@ -60,7 +65,9 @@ class SimulatedMotors:
             self.names += [gripper.left_finger, gripper.right_finger]
             self.positions += [distance, -distance]
         self.index = {name: i for i, name in enumerate(self.names)}
-        self.state_index = dict(self.index)     # get_robot_info's: where joint_states has them
+        # get_robot_info's: where the joint states have each joint
+        self.state_index = self.index if state_order is None else \
+            {name: i for i, name in enumerate(state_order)}
         self.joint_modes: Dict[str, Mode] = {}
         self.group_modes: Dict[str, Mode] = {}
         self.commands: Dict[str, object] = {}   # joint -> a value, or waypoints (last first)
@@ -72,7 +79,8 @@ class SimulatedMotors:
                 self.joint_modes[joint] = Mode(**vars(mode))
 
     # --- modes and registers ---------------------------------------------------------------
-    def _joints(self, cmd_type: str, name: str) -> List[str]:
+    def joints(self, cmd_type: str, name: str) -> List[str]:
+        """The motors a 'group' or 'single' request names; CommandError for another."""
         if cmd_type == "group":
             if name not in self.config.groups:
                 raise _missing(name)
@@ -90,7 +98,7 @@ class SimulatedMotors:
             raise CommandError(f"Invalid command for argument 'mode' ({mode!r}) while setting "
                                f"the operating mode for '{name}': one of {', '.join(MODES)}")
         with self.lock:
-            for joint in self._joints(cmd_type, name):
+            for joint in self.joints(cmd_type, name):
                 self.joint_modes[joint] = Mode(mode, profile_type, int(profile_velocity),
                                                int(profile_acceleration))
             if cmd_type == "group":
@@ -101,7 +109,7 @@ class SimulatedMotors:
         """Only the profile registers mean anything without motors (as upstream's)."""
         attribute = PROFILE_REGISTERS.get(register)
         with self.lock:
-            joints = self._joints(cmd_type, name)
+            joints = self.joints(cmd_type, name)
             if attribute is None:
                 return
             for joint in joints:
@@ -112,19 +120,19 @@ class SimulatedMotors:
     def get_register(self, cmd_type: str, name: str, register: str) -> List[int]:
         attribute = PROFILE_REGISTERS.get(register)
         with self.lock:
-            joints = self._joints(cmd_type, name)
+            joints = self.joints(cmd_type, name)
             if attribute is None:
                 return []
             return [int(getattr(self.joint_modes[joint], attribute)) for joint in joints]
 
     def mode_of(self, cmd_type: str, name: str) -> Mode:
         with self.lock:
-            self._joints(cmd_type, name)
+            self.joints(cmd_type, name)
             return (self.group_modes if cmd_type == "group" else self.joint_modes)[name]
 
     # --- commands --------------------------------------------------------------------------
     def write_group(self, name: str, commands: Sequence[float]) -> None:
-        joints = self._joints("group", name)
+        joints = self.joints("group", name)
         if len(commands) != len(joints):
             raise CommandError(f"Number of commands ({len(commands)}) does not match the number "
                                f"of joints in group '{name}' ({len(joints)}). Will not execute.")
@@ -133,7 +141,7 @@ class SimulatedMotors:
             self.write_joint(joint, command)
 
     def write_joint(self, name: str, command: float) -> None:
-        self._joints("single", name)
+        self.joints("single", name)
         self._check_finite(name, [command])
         with self.lock:
             mode = self.joint_modes[name]
@@ -204,7 +212,7 @@ class SimulatedMotors:
         there is none (the lists stay empty, as upstream's). A gripper answers for its left
         finger: its name, limits, joint state index, and the finger's distance at horn angle 0
         as its sleep position."""
-        joints = self._joints(cmd_type, name)
+        joints = self.joints(cmd_type, name)
         mode = self.mode_of(cmd_type, name)
         info = {"mode": mode.mode, "profile_type": mode.profile_type, "joint_names": [],
                 "joint_ids": [], "joint_lower_limits": [], "joint_upper_limits": [],

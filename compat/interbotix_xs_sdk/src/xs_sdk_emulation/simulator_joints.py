@@ -12,7 +12,7 @@ is the workspace's way of running a script on Interbotix's Python API against th
 from __future__ import annotations
 
 import time
-from typing import Dict, List, Sequence
+from typing import List, Sequence
 
 import rospy
 from controller_manager_msgs.srv import ListControllers
@@ -70,7 +70,3 @@ class SimulatorJoints:
             publisher = self.commands.get(name)
             if publisher is not None:
                 publisher.publish(Float64(position))
-
-    def state_indices(self) -> Dict[str, int]:
-        """Where each joint is in the simulator's joint states (get_robot_info's indices)."""
-        return {name: index for index, name in enumerate(self.state_order)}

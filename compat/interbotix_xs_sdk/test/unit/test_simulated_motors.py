@@ -1,6 +1,9 @@
 """xs_sdk_sim's motors, tick by tick, on the px100's own motor config and modes
 (interbotix_xsarm_control/config): what upstream's xs_sdk_sim does with each command
-(interbotix_ros_core noetic 172841f, scripts/xs_sdk_sim), and the driver's refusals."""
+(interbotix_ros_core noetic 172841f, interbotix_xs_sdk/scripts/xs_sdk_sim: 20 Hz l. 19;
+the 300 ms threshold l. 21; round(ms / 1000 * 20 + 1) waypoints l. 209-213; command / 20
+and command / 2000 a tick l. 457-466; the linkage l. 219-236), and the driver's refusals
+(src/xs_sdk_obj.cpp l. 71, 73, 146, 239)."""
 import math
 import os
 
