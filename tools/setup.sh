@@ -125,10 +125,10 @@ platform_count=$(find -L "$platform_ws/src" -name package.xml -not -path '*/test
 export PATH="/usr/bin:/bin:$PATH"
 log="$ws/catkin_make.log"
 platform_log="$platform_ws/catkin_make.log"
-(cd "$ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON \
+(cd "$ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DPython3_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON \
    >"$log" 2>&1) &
 workspace_build=$!
-(cd "$platform_ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 \
+(cd "$platform_ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DPython3_EXECUTABLE=/usr/bin/python3 \
    -DCATKIN_ENABLE_TESTING=OFF >"$platform_log" 2>&1) &
 platform_build=$!
 workspace_ok=0; wait "$workspace_build" || workspace_ok=$?
