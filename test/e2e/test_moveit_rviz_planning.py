@@ -1,0 +1,80 @@
+"""The px100's MoveIt with rviz on a user's config (test/fixtures/rviz/px100_planning.rviz):
+a plan from moveit_commander is animated by the Trajectory display (looping, in its Robot
+Color: two screenshots at different times differ where the arm moves), and the
+MotionPlanning panel's Plan and Execute, pressed through MoveIt's remote-control topics,
+move the fake arm to a named goal state (/joint_states reaches it)."""
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+import headless
+import rviz_view
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+FIXTURE = os.path.join(os.path.dirname(HERE), "fixtures", "rviz")
+PATH_PIXELS = 150        # the path robot in its colour: about 1000-3000 pixels in this view
+MOVING_PIXELS = 100      # path-robot pixels that change between two moments of the animation
+SCREEN_WAIT = 30.0       # s
+
+
+def path_cyan(red, green, blue):
+    # the Trajectory display's Robot Color, 0; 220; 220, lit (no other display draws cyan:
+    # the goal marker's rings are red, green and blue)
+    return (green > 100) & (blue > 100) & (green > red + 60) & (blue > red + 60) \
+        & (abs(green - blue) < 40)
+
+
+def run(env, script, *arguments):
+    done = subprocess.run([sys.executable, os.path.join(HERE, script), *arguments], env=env,
+                          capture_output=True, text=True, timeout=150, check=False)
+    assert done.returncode == 0, done.stdout[-2000:] + done.stderr[-3000:]
+    return done.stdout
+
+
+def test_paths_animate_and_the_panel_plans_and_executes(screen_env, results_dir):
+    display = screen_env["DISPLAY"]
+    figures = {}
+
+    def scenario(launch):
+        headless.wait_until(lambda: "You can start planning now!" in launch.output()
+                            or not launch.running(), 90, "move_group")
+        idle_path = os.path.join(results_dir, "idle.png")
+        headless.stable_screenshot(display, idle_path, "RViz", launch)
+        idle = rviz_view.image(idle_path)
+        rect = rviz_view.view_rect(idle)
+        figures["path_pixels_before"] = int(rviz_view.mask(idle, path_cyan, rect).sum())
+
+        run(screen_env, "moveit_scene_steps.py", "plan", "Upright")
+
+        def moment(name):
+            picture = rviz_view.image(headless.screenshot(
+                display, os.path.join(results_dir, name + ".png")))
+            return rviz_view.mask(picture, path_cyan, rect)
+
+        first = headless.wait_until(lambda: [m for m in [moment("animation_1")]
+                                             if m.sum() > PATH_PIXELS], SCREEN_WAIT,
+                                    "the planned path drawn")[0]
+
+        def moved():
+            later = moment("animation_2")
+            return [later] if later.sum() > PATH_PIXELS and (later ^ first).sum() \
+                > MOVING_PIXELS else None
+        second = headless.wait_until(moved, SCREEN_WAIT, "the path robot to move")[0]
+        figures["path_pixels"] = [int(first.sum()), int(second.sum())]
+        figures["path_pixels_changed"] = int((first ^ second).sum())
+
+        figures["reached"] = json.loads(run(screen_env, "rviz_remote_control.py", "Sleep"))
+        assert launch.running(), launch.output()[-3000:]
+        return launch.output()
+
+    output = headless.run_while_node_lives(
+        [os.path.join(FIXTURE, "px100_planning.launch")], screen_env,
+        os.path.join(results_dir, "px100_planning.log"), scenario)
+    with open(os.path.join(results_dir, "figures.json"), "w", encoding="utf-8") as stream:
+        json.dump(figures, stream, indent=1)
+    assert "PluginlibFactory" not in output and "failed to load" not in output, output[-3000:]
+    assert figures["path_pixels_before"] < 10, figures
+    assert figures["path_pixels_changed"] > MOVING_PIXELS, figures
