@@ -25,18 +25,31 @@ def image(path: str) -> np.ndarray:
     return np.frombuffer(raw, dtype=np.uint8).reshape(height, width, 3).astype(int)
 
 
-# a row or column of the 3D view is mostly its background; widgets have a few such pixels
+# a column of the 3D view is mostly its background (scene objects cover its lower part, not
+# its upper); widgets have a few such pixels
 VIEW_BACKGROUND_SHARE = 0.2
+# a row of the window's own light grey, uniform across the view's columns, borders the view
+BORDER_BRIGHTNESS = 180
+BORDER_SPREAD = 8
 
 
 def view_rect(picture: np.ndarray, background=(48, 48, 48)) -> Tuple[int, int, int, int]:
-    """(left, top, width, height) of the 3D view: the rows and columns its background colour
-    fills a good share of."""
+    """(left, top, width, height) of the 3D view: the columns its background colour fills a
+    good share of, and the rows between the window's light rows above and below it."""
     filled = np.all(picture == np.array(background), axis=2)
     columns = np.nonzero(filled.mean(axis=0) > VIEW_BACKGROUND_SHARE)[0]
-    rows = np.nonzero(filled.mean(axis=1) > VIEW_BACKGROUND_SHARE)[0]
-    return (int(columns.min()), int(rows.min()), int(columns.max() - columns.min() + 1),
-            int(rows.max() - rows.min() + 1))
+    left, right = int(columns.min()), int(columns.max())
+    band = picture[:, left:right + 1].mean(axis=2)
+    border = (band.min(axis=1) > BORDER_BRIGHTNESS) & \
+        (band.max(axis=1) - band.min(axis=1) < BORDER_SPREAD)
+    inside = int(np.argmax(filled[:, left:right + 1].mean(axis=1)))
+    top = inside
+    while top > 0 and not border[top - 1]:
+        top -= 1
+    bottom = inside
+    while bottom + 1 < len(border) and not border[bottom + 1]:
+        bottom += 1
+    return left, top, right - left + 1, bottom - top + 1
 
 
 def mask(picture: np.ndarray, test: Callable[[np.ndarray, np.ndarray, np.ndarray], np.ndarray],
@@ -49,6 +62,13 @@ def mask(picture: np.ndarray, test: Callable[[np.ndarray, np.ndarray, np.ndarray
         inside[top:top + height, left:left + width] = True
         selected &= inside
     return selected
+
+
+def share_near(selected: np.ndarray, point, radius: float) -> float:
+    """The share of the pixels within ``radius`` of ``point`` (x, y) that are selected."""
+    rows, columns = np.mgrid[0:selected.shape[0], 0:selected.shape[1]]
+    disc = (columns - point[0]) ** 2 + (rows - point[1]) ** 2 < radius ** 2
+    return float(selected[disc].mean()) if disc.any() else 0.0
 
 
 def centroid(selected: np.ndarray) -> Optional[Tuple[float, float]]:
