@@ -17,6 +17,7 @@ import pytest
 from tf.transformations import quaternion_matrix
 
 import headless
+import rviz_view
 from urdf_tools import load_urdf
 from urdf_tools.kinematics import link_transform
 
@@ -91,3 +92,38 @@ def test_a_setup_assistant_config_runs_the_tutorials_steps(overlay, ros_env, res
     assert metres <= 0.001 and radians <= 0.01, (metres, radians)
     assert not steps["blocked"]["ok"] and steps["blocked"]["code"] == PLANNING_FAILED
     assert steps["blocked"]["objects"] == ["box"]
+
+
+# MoveIt's goal state colour (Goal State Color 250; 128; 0 in the config), lit: the
+# MotionPlanning display draws the query's goal state over the arm
+GOAL_STATE_PIXELS = 300
+
+
+def goal_orange(red, green, blue):
+    # lit, it reads about (223, 56, 0); the goal marker's red rings have almost no green
+    return (red > 180) & (green > 40) & (green < 110) & (blue < 40)
+
+
+def test_demo_launch_opens_moveits_rviz(overlay, screen_env, results_dir):
+    """demo.launch with its rviz (use_rviz's default) and the package's Setup-Assistant-style
+    moveit.rviz: every display class loads (no PluginlibFactory error in rviz's log) and the
+    MotionPlanning display draws the arm's goal state."""
+    _, overlay_env = overlay
+    env = dict(overlay_env, **{key: screen_env[key] for key in
+                               ("ROS_MASTER_URI", "ROS_HOME", "DISPLAY", "LIBGL_ALWAYS_SOFTWARE")})
+    shot = os.path.join(results_dir, "demo_rviz.png")
+
+    def picture(launch):
+        headless.wait_until(lambda: "You can start planning now!" in launch.output()
+                            or not launch.running(), START_LIMIT, "move_group")
+        headless.stable_screenshot(env["DISPLAY"], shot, "RViz", launch)
+        assert launch.running(), launch.output()[-3000:]
+        return launch.output()
+
+    output = headless.run_while_node_lives(["six_axis_arm_moveit_config", "demo.launch"], env,
+                                           os.path.join(results_dir, "demo_rviz.log"), picture)
+    assert "PluginlibFactory" not in output and "failed to load" not in output, output[-3000:]
+    picture_array = rviz_view.image(shot)
+    orange = int(rviz_view.mask(picture_array, goal_orange,
+                                rviz_view.view_rect(picture_array)).sum())
+    assert orange > GOAL_STATE_PIXELS, f"{orange} pixels in the goal state's colour"
