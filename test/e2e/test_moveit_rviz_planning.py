@@ -2,7 +2,9 @@
 a plan from moveit_commander is animated by the Trajectory display (looping, in its Robot
 Color: two screenshots at different times differ where the arm moves), and the
 MotionPlanning panel's Plan and Execute, pressed through MoveIt's remote-control topics,
-move the fake arm to a named goal state (/joint_states reaches it)."""
+move the fake arm to a named goal state (/joint_states reaches it); the panel's Scene
+Objects tab, clicked with xdotool, adds its box, drawn in the display's default Scene Color
+where the box's default pose projects."""
 import json
 import os
 import subprocess
@@ -18,6 +20,23 @@ FIXTURE = os.path.join(os.path.dirname(HERE), "fixtures", "rviz")
 PATH_PIXELS = 150        # the path robot in its colour: about 1000-3000 pixels in this view
 MOVING_PIXELS = 100      # path-robot pixels that change between two moments of the animation
 SCREEN_WAIT = 30.0       # s
+# the panel's widgets in px100_planning.rviz's window (1024 x 768, the panel docked on the
+# left as rviz places an associated widget): the Scene Objects tab, its Add Box button
+SCENE_OBJECTS_TAB = (139, 99)
+ADD_BOX_BUTTON = (210, 198)
+PANEL_BOX = (0.3, 0.0, 0.05)   # m: the Scene Objects tab's default box position
+BOX_RADIUS = 20                # px around the box's projected centre
+BOX_SHARE = 0.6                # of those pixels in the scene colour
+
+
+def scene_green(red, green, blue):
+    # PlanningSceneDisplay's default Scene Color, 50; 230; 50 at alpha 0.9, lit
+    return (green > 120) & (green > red + 60) & (green > blue + 60)
+
+
+def click(env, point):
+    subprocess.run(["xdotool", "mousemove", str(point[0]), str(point[1]), "click", "1"],
+                   env=env, check=True, timeout=20)
 
 
 def path_cyan(red, green, blue):
@@ -67,6 +86,19 @@ def test_paths_animate_and_the_panel_plans_and_executes(screen_env, results_dir)
         figures["path_pixels_changed"] = int((first ^ second).sum())
 
         figures["reached"] = json.loads(run(screen_env, "rviz_remote_control.py", "Sleep"))
+
+        click(screen_env, SCENE_OBJECTS_TAB)
+        click(screen_env, ADD_BOX_BUTTON)
+        box = rviz_view.OrbitView(os.path.join(FIXTURE, "px100_planning.rviz")).project(
+            PANEL_BOX, rect)
+
+        def box_drawn():
+            picture = rviz_view.image(headless.screenshot(
+                display, os.path.join(results_dir, "panel_box.png")))
+            figures["panel_box"] = rviz_view.share_near(
+                rviz_view.mask(picture, scene_green, rect), box, BOX_RADIUS)
+            return figures["panel_box"] > BOX_SHARE
+        headless.wait_until(box_drawn, SCREEN_WAIT, "the panel's box drawn", 0.5)
         assert launch.running(), launch.output()[-3000:]
         return launch.output()
 

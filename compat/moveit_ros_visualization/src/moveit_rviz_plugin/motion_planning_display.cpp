@@ -425,8 +425,8 @@ void MotionPlanningDisplay::update(float wall_dt, float ros_dt)
     query_goal_robot_->update(query_goal_, {});
     query_start_robot_->setVisible(isEnabled() && query_start_state_property_->getBool());
     query_goal_robot_->setVisible(isEnabled() && query_goal_state_property_->getBool());
-    refreshSceneObjectList();
   }
+  refreshSceneObjectList();
   if (marker_display_ && marker_display_->isEnabled())
     marker_display_->update(wall_dt, ros_dt);
 }
