@@ -2,6 +2,8 @@
 # idempotent: a second run installs nothing and rebuilds only what changed).
 #   make          set up and build
 #   make demo     set up, then run the main demo (headless: prints a screenshot's path)
+#   make demo-arm set up, then the homework's arm in MoveIt's rviz with its planning scene
+#                 (headless: prints a screenshot's path)
 #   make test     set up, then run every test tier; ends with "N passed, N failed"
 #   make fuzz-long set up, then the fuzz tier with many more random cases (FUZZ_LONG=1)
 #   make soak     set up, then the long and timing-bound runs beside make test: the flip
@@ -11,7 +13,7 @@
 #                 the simulator started and stopped 50 times (make test: 12, each state 3 times)
 #   make bench    set up, then measure sim_bridge's speed and memory (prints a table)
 #   make lint     catkin_lint -W2 on every package
-.PHONY: all setup demo test fuzz-long soak bench lint clean
+.PHONY: all setup demo demo-arm test fuzz-long soak bench lint clean
 
 # Whatever python3 pyenv or conda put first, the workspace runs on the system interpreter.
 SHELL := /bin/bash
@@ -24,6 +26,9 @@ setup:
 
 demo: setup
 	@$(RUN) python3 tools/demo.py
+
+demo-arm: setup
+	@$(RUN) python3 tools/demo_arm.py
 
 test: setup
 	@$(RUN) python3 tools/run_tests.py
