@@ -25,12 +25,6 @@ DEGREES = -90
 SETTLE = 2.0  # simulated s that an rviz started again runs before the picture (TF, scan)
 
 
-def real_screen() -> bool:
-    display = os.environ.get("DISPLAY")
-    return bool(display) and subprocess.run(["xdpyinfo", "-display", display],
-                                            capture_output=True, check=False).returncode == 0
-
-
 def true_yaw_degrees(get_state) -> float:
     from tf.transformations import euler_from_quaternion  # ROS's, once the workspace is set up
     q = get_state("my_rb1", "").pose.orientation
@@ -87,13 +81,10 @@ def main() -> int:
     os.makedirs(OUTPUT, exist_ok=True)
     shot = os.path.join(OUTPUT, "rb1_warehouse_rviz.png")
     log = os.path.join(OUTPUT, "rotate_demo.launch.log")
-    on_screen = real_screen()
-    if not on_screen:
-        print("demo: no screen; rendering rviz under Xvfb")
+    on_screen = headless.real_screen()
     # On Xvfb everything renders in software: rviz alone, not pybullet's window as well.
     arguments = ["my_rb1_ros", "rotate_demo.launch", f"gui:={str(on_screen).lower()}"]
-    screen = (contextlib.nullcontext(os.environ["DISPLAY"]) if on_screen
-              else headless.virtual_display())
+    screen = headless.screen_or_virtual("demo")
     with headless.private_master(os.path.join(OUTPUT, "ros_home")) as env, screen as display:
         env.update(DISPLAY=display, LIBGL_ALWAYS_SOFTWARE="1")
         os.environ.update(ROS_MASTER_URI=env["ROS_MASTER_URI"], ROS_HOME=env["ROS_HOME"],

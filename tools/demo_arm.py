@@ -9,13 +9,11 @@ launch whose rviz died of a signal is started again (headless.run_while_node_liv
 """
 from __future__ import annotations
 
-import contextlib
 import os
 import subprocess
 import sys
 
 import headless
-from demo import real_screen
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUTPUT = os.path.join(REPO, "test_results", "demo_arm")
@@ -37,12 +35,8 @@ def main() -> int:
     os.makedirs(OUTPUT, exist_ok=True)
     shot = os.path.join(OUTPUT, "arm_planning_scene.png")
     log = os.path.join(OUTPUT, "arm.launch.log")
-    on_screen = real_screen()
-    if not on_screen:
-        print("demo-arm: no screen; rendering rviz under Xvfb")
-    screen = (contextlib.nullcontext(os.environ["DISPLAY"]) if on_screen
-              else headless.virtual_display())
-    with headless.private_master(os.path.join(OUTPUT, "ros_home")) as env, screen as display:
+    with headless.private_master(os.path.join(OUTPUT, "ros_home")) as env, \
+            headless.screen_or_virtual("demo-arm") as display:
         env.update(DISPLAY=display, LIBGL_ALWAYS_SOFTWARE="1")
         print(f"demo-arm: roslaunch arm_move arm.launch use_sim:=true fake:=true (log {log})")
 

@@ -2,7 +2,8 @@
 
 Used by ``make demo`` and by the end-to-end tests in ``test/``:
 
-- :func:`virtual_display` starts Xvfb on a free display and waits until it answers;
+- :func:`virtual_display` starts Xvfb on a free display and waits until it answers
+  (:func:`screen_or_virtual`: only when there is no real screen);
 - :func:`private_master` reserves a port, so a run never meets another run's roscore;
 - :func:`roslaunch` starts a launch file with a log file and stops it (and its children);
 - :func:`run_while_node_lives` starts it again when its rviz died of a signal while starting;
@@ -119,6 +120,22 @@ def virtual_display(width: int = 1024, height: int = 768,
             except subprocess.TimeoutExpired:
                 server.kill()
                 server.wait()
+
+
+def real_screen() -> bool:
+    """True when DISPLAY names an X server that answers."""
+    display = os.environ.get("DISPLAY")
+    return bool(display) and subprocess.run(["xdpyinfo", "-display", display],
+                                            capture_output=True, check=False).returncode == 0
+
+
+def screen_or_virtual(who: str):
+    """The real screen when there is one (a context yielding its DISPLAY), otherwise a
+    :func:`virtual_display`, saying so as ``who``."""
+    if real_screen():
+        return contextlib.nullcontext(os.environ["DISPLAY"])
+    print(f"{who}: no screen; rendering rviz under Xvfb", flush=True)
+    return virtual_display()
 
 
 class Launch:

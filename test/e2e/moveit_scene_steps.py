@@ -2,7 +2,10 @@
 for the rviz tests: ``add NAME X Y Z SIZE``, ``remove NAME``, ``attach NAME SIZE`` (a cube
 on the gripper's ee_gripper_link), ``go STATE`` (a named state of interbotix_arm), ``plan
 STATE`` (plans only: move_group shows the path), ``gripper`` (prints the ee_gripper_link's
-position in the world, from TF)."""
+position in the world, from TF), ``show LINK W S E A`` (publishes a DisplayRobotState on the
+robot's display_robot_state: the arm at those joint values, LINK highlighted in yellow;
+prints the world positions of LINK's origin and of its child link's, from move_group's
+compute_fk)."""
 import json
 import sys
 
@@ -10,6 +13,9 @@ import geometry_msgs.msg
 import moveit_commander
 import rospy
 import tf2_ros
+from moveit_msgs.msg import DisplayRobotState, ObjectColor, RobotState
+from moveit_msgs.srv import GetPositionFK
+from urdf_parser_py.urdf import URDF
 
 ROBOT = "px100"
 GRIPPER_LINK = "px100/ee_gripper_link"
@@ -47,6 +53,28 @@ def main(step, *arguments):
             assert arm.go(wait=True), "the arm did not reach " + arguments[0]
         else:
             assert arm.plan()[0], "no plan to " + arguments[0]
+    elif step == "show":
+        link, joints = arguments[0], [float(value) for value in arguments[1:]]
+        state = RobotState()
+        state.joint_state.name = ["waist", "shoulder", "elbow", "wrist_angle"]
+        state.joint_state.position = joints
+        shown = rospy.Publisher(f"/{ROBOT}/display_robot_state", DisplayRobotState,
+                                queue_size=1, latch=True)
+        highlight = ObjectColor(id=link)
+        highlight.color.r, highlight.color.g, highlight.color.a = 1.0, 1.0, 1.0
+        shown.publish(DisplayRobotState(state=state, highlight_links=[highlight]))
+        fk = rospy.ServiceProxy(f"/{ROBOT}/compute_fk", GetPositionFK)
+        fk.wait_for_service(TF_WAIT)
+        child = URDF.from_xml_string(rospy.get_param(f"/{ROBOT}/robot_description")).child_map[
+            link][0][1]
+        found = [pose.pose.position for pose in fk(
+            header=rospy.Header(frame_id="world"), fk_link_names=[link, child],
+            robot_state=state).pose_stamped]
+        deadline = rospy.get_time() + TF_WAIT
+        while shown.get_num_connections() == 0 and rospy.get_time() < deadline:
+            rospy.sleep(0.05)
+        rospy.sleep(1.0)   # latched: rviz has it once connected; the node stays that long
+        print(json.dumps([[p.x, p.y, p.z] for p in found]))
     elif step == "gripper":
         buffer = tf2_ros.Buffer()
         tf2_ros.TransformListener(buffer)

@@ -2,9 +2,12 @@
 a plan from moveit_commander is animated by the Trajectory display (looping, in its Robot
 Color: two screenshots at different times differ where the arm moves), and the
 MotionPlanning panel's Plan and Execute, pressed through MoveIt's remote-control topics,
-move the fake arm to a named goal state (/joint_states reaches it); the panel's Scene
+move the fake arm to a named goal state (/joint_states reaches it) and to where the goal
+marker was dragged (the display's compute_ik call: the gripper, by TF, within 5 mm of the
+marker); the panel's Scene
 Objects tab, clicked with xdotool, adds its box, drawn in the display's default Scene Color
-where the box's default pose projects."""
+where the box's default pose projects; the RobotState display draws a DisplayRobotState
+with its highlighted link in the highlight's colour where the link projects."""
 import json
 import os
 import subprocess
@@ -20,6 +23,15 @@ FIXTURE = os.path.join(os.path.dirname(HERE), "fixtures", "rviz")
 PATH_PIXELS = 150        # the path robot in its colour: about 1000-3000 pixels in this view
 MOVING_PIXELS = 100      # path-robot pixels that change between two moments of the animation
 SCREEN_WAIT = 30.0       # s
+MARKER_JOINTS = (0.4, -0.3, 0.2, 0.5)   # rad: waist, shoulder, elbow, wrist_angle; the marker
+                                        # is dragged to the gripper's pose there
+MARKER_TOLERANCE = 0.005                # m
+SHOWN_STATE = (0.8, 0.8, 0.0, 0.0)      # rad: the DisplayRobotState's arm turned towards the
+                                        # view's camera and leaning to it: nearer than the
+                                        # other robots, none hides it
+HIGHLIGHTED_LINK = "px100/upper_arm_link"
+LINK_RADIUS = 20                        # px around the link's projected middle
+LINK_PIXELS = 100                       # highlighted pixels there at least
 # the panel's widgets in px100_planning.rviz's window (1024 x 768, the panel docked on the
 # left as rviz places an associated widget): the Scene Objects tab, its Add Box button
 SCENE_OBJECTS_TAB = (139, 99)
@@ -32,6 +44,11 @@ BOX_SHARE = 0.6                # of those pixels in the scene colour
 def scene_green(red, green, blue):
     # PlanningSceneDisplay's default Scene Color, 50; 230; 50 at alpha 0.9, lit
     return (green > 120) & (green > red + 60) & (green > blue + 60)
+
+
+def highlight_yellow(red, green, blue):
+    # the highlight's 1, 1, 0, lit; the goal state's orange has about half the green
+    return (red > 150) & (green > 150) & (blue < 80)
 
 
 def click(env, point):
@@ -86,6 +103,23 @@ def test_paths_animate_and_the_panel_plans_and_executes(screen_env, results_dir)
         figures["path_pixels_changed"] = int((first ^ second).sum())
 
         figures["reached"] = json.loads(run(screen_env, "rviz_remote_control.py", "Sleep"))
+        figures["marker"] = json.loads(run(screen_env, "rviz_remote_control.py", "--marker",
+                                           *map(str, MARKER_JOINTS)))
+
+        ends = json.loads(run(screen_env, "moveit_scene_steps.py", "show", HIGHLIGHTED_LINK,
+                              *map(str, SHOWN_STATE)))
+        link_pixel = rviz_view.OrbitView(os.path.join(FIXTURE, "px100_planning.rviz")).project(
+            np.mean(ends, axis=0), rect)
+
+        def highlighted():
+            picture = rviz_view.image(headless.screenshot(
+                display, os.path.join(results_dir, "robot_state.png")))
+            yellow = rviz_view.mask(picture, highlight_yellow, rect)
+            rows, columns = np.nonzero(yellow)
+            figures["highlight_near_link"] = int(np.sum(
+                np.hypot(columns - link_pixel[0], rows - link_pixel[1]) < LINK_RADIUS))
+            return figures["highlight_near_link"] > LINK_PIXELS
+        headless.wait_until(highlighted, SCREEN_WAIT, "the highlighted link drawn", 0.5)
 
         click(screen_env, SCENE_OBJECTS_TAB)
         click(screen_env, ADD_BOX_BUTTON)
@@ -110,3 +144,5 @@ def test_paths_animate_and_the_panel_plans_and_executes(screen_env, results_dir)
     assert "PluginlibFactory" not in output and "failed to load" not in output, output[-3000:]
     assert figures["path_pixels_before"] < 10, figures
     assert figures["path_pixels_changed"] > MOVING_PIXELS, figures
+    assert np.linalg.norm(np.subtract(figures["marker"]["wanted"],
+                                      figures["marker"]["reached"])) < MARKER_TOLERANCE, figures

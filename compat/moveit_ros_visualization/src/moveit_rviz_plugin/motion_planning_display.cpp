@@ -169,7 +169,7 @@ MotionPlanningDisplay::~MotionPlanningDisplay()
   trajectory_visual_.reset();
   query_start_robot_.reset();
   query_goal_robot_.reset();
-  delete frame_;
+  delete frame_.data();
 }
 
 void MotionPlanningDisplay::onInitialize()
@@ -251,6 +251,7 @@ void MotionPlanningDisplay::reset()
 
 void MotionPlanningDisplay::onRobotModelLoaded()
 {
+  PlanningSceneDisplay::onRobotModelLoaded();
   trajectory_visual_->onRobotModelLoaded(kinematics_);
   query_start_robot_->load(kinematics_);
   query_goal_robot_->load(kinematics_);

@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include <QPointer>
 #include <actionlib/client/simple_action_client.h>
 #include <interactive_markers/interactive_marker_server.h>
 #include <moveit_msgs/ExecuteTrajectoryAction.h>
@@ -104,7 +105,9 @@ private:
   rviz::ColorProperty* query_outside_joint_limits_link_color_property_;
 
   std::unique_ptr<TrajectoryVisualization> trajectory_visual_;
-  MotionPlanningFrame* frame_ = nullptr;
+  // rviz's dock owns the panel once it is the display's associated widget (and deletes it
+  // with the dock): the pointer goes null if that happens first
+  QPointer<MotionPlanningFrame> frame_;
   std::unique_ptr<RobotStateVisual> query_start_robot_;
   std::unique_ptr<RobotStateVisual> query_goal_robot_;
   JointPositions query_start_;

@@ -5,7 +5,6 @@
  * drawn at the planning frame's pose in the fixed frame. */
 #include "planning_scene_display.h"
 #include "robot_frame_placement.h"
-#include "robot_model_loader.h"
 
 #include <OgreSceneManager.h>
 #include <OgreSceneNode.h>
@@ -35,10 +34,6 @@ PlanningSceneDisplay::PlanningSceneDisplay(bool listen_to_planning_scene, bool s
   move_group_ns_property_ =
       new rviz::StringProperty("Move Group Namespace", "", "The name of the ROS namespace in which the move_group node is running",
                                this, SLOT(changedMoveGroupNS()), this);
-  robot_description_property_ =
-      new rviz::StringProperty("Robot Description", "robot_description",
-                               "The name of the ROS parameter where the URDF for the robot is loaded", this,
-                               SLOT(changedRobotDescription()), this);
   if (listen_to_planning_scene_)
     planning_scene_topic_property_ =
         new rviz::RosTopicProperty("Planning Scene Topic", "move_group/monitored_planning_scene",
@@ -123,11 +118,11 @@ void PlanningSceneDisplay::onInitialize()
 void PlanningSceneDisplay::onEnable()
 {
   Display::onEnable();
-  if (!robot_loaded_)
+  if (!robotModelLoaded())
     loadRobotModel();
   subscribe();
   if (scene_robot_)
-    scene_robot_->setVisible(robot_loaded_);
+    scene_robot_->setVisible(robotModelLoaded());
   scene_changed_ = true;
 }
 
@@ -147,7 +142,7 @@ void PlanningSceneDisplay::reset()
   attached_.clear();
   object_colors_.clear();
   world_visuals_.clear();
-  robot_loaded_ = false;
+  forgetRobotModel();
   Display::reset();
   if (isEnabled())
   {
@@ -165,21 +160,8 @@ std::string PlanningSceneDisplay::moveGroupPrefix() const
   return ns;
 }
 
-void PlanningSceneDisplay::loadRobotModel()
+void PlanningSceneDisplay::onRobotModelLoaded()
 {
-  const RobotModelLoad load = moveit_rviz_plugin::loadRobotModel(robot_description_property_->getStdString(), kinematics_, srdf_);
-  if (!load.ok)
-  {
-    setStatusStd(rviz::StatusProperty::Error, "Robot Model", load.error);
-    return;
-  }
-  if (load.srdf_problem.empty())
-    deleteStatusStd("Robot Semantics");
-  else
-    setStatusStd(rviz::StatusProperty::Warn, "Robot Semantics", load.srdf_problem);
-  planning_frame_ = load.planning_frame;
-  robot_loaded_ = true;
-  setStatusStd(rviz::StatusProperty::Ok, "Robot Model", "loaded from '" + load.key + "'");
   if (scene_robot_)
   {
     scene_robot_->load(kinematics_);
@@ -187,11 +169,6 @@ void PlanningSceneDisplay::loadRobotModel()
     scene_robot_->setVisible(isEnabled());
   }
   scene_changed_ = true;
-  onRobotModelLoaded();
-}
-
-void PlanningSceneDisplay::onRobotModelLoaded()
-{
 }
 
 void PlanningSceneDisplay::subscribe()
@@ -302,16 +279,8 @@ void PlanningSceneDisplay::applyAttachedObject(const moveit_msgs::AttachedCollis
 void PlanningSceneDisplay::update(float wall_dt, float ros_dt)
 {
   Display::update(wall_dt, ros_dt);
-  if (!robot_loaded_)
-  {
-    robot_retry_ += wall_dt;
-    if (robot_retry_ < ROBOT_RETRY_PERIOD)
-      return;
-    robot_retry_ = 0.0f;
-    loadRobotModel();
-    if (!robot_loaded_)
-      return;
-  }
+  if (!ensureRobotModel(wall_dt))
+    return;
   placePlanningFrame();
   if (scene_changed_)
   {
@@ -322,14 +291,14 @@ void PlanningSceneDisplay::update(float wall_dt, float ros_dt)
 
 void PlanningSceneDisplay::placePlanningFrame()
 {
-  placeAtFrame(planning_scene_node_, planning_frame_, context_, this);
+  placeAtFrame(planning_scene_node_, planningFrame(), context_, this);
 }
 
 bool PlanningSceneDisplay::objectPose(const std::string& frame, Ogre::Vector3& position, Ogre::Quaternion& orientation)
 {
   position = Ogre::Vector3::ZERO;
   orientation = Ogre::Quaternion::IDENTITY;
-  if (frame.empty() || frame == planning_frame_ || frame == "/" + planning_frame_)
+  if (frame.empty() || frame == planningFrame() || frame == "/" + planningFrame())
     return true;
   if (kinematics_.urdf().getLink(frame))
   {
@@ -385,7 +354,7 @@ void PlanningSceneDisplay::renderScene()
     deleteStatusStd("Scene Objects");
   else
     setStatusStd(rviz::StatusProperty::Warn, "Scene Objects", "no transform for " + unplaced);
-  if (scene_robot_ && robot_loaded_)
+  if (scene_robot_ && robotModelLoaded())
   {
     std::vector<moveit_msgs::AttachedCollisionObject> attached;
     for (const auto& entry : attached_)
@@ -409,11 +378,6 @@ void PlanningSceneDisplay::changedMoveGroupNS()
   }
 }
 
-void PlanningSceneDisplay::changedRobotDescription()
-{
-  if (isEnabled())
-    reset();
-}
 
 void PlanningSceneDisplay::changedPlanningSceneTopic()
 {

@@ -12,12 +12,9 @@
 
 #include <moveit_msgs/PlanningScene.h>
 #include <ros/ros.h>
-#include <rviz/display.h>
-
 #include "collision_object_visual.h"
-#include "robot_kinematics.h"
+#include "robot_model_display.h"
 #include "robot_state_visual.h"
-#include "srdf_model.h"
 
 namespace rviz
 {
@@ -31,7 +28,7 @@ class StringProperty;
 
 namespace moveit_rviz_plugin
 {
-class PlanningSceneDisplay : public rviz::Display
+class PlanningSceneDisplay : public RobotModelDisplay
 {
   Q_OBJECT
 public:
@@ -47,7 +44,6 @@ public:
 
 protected Q_SLOTS:
   void changedMoveGroupNS();
-  void changedRobotDescription();
   void changedPlanningSceneTopic();
   void changedSceneEnabled();
   void changedSceneAlpha();
@@ -63,22 +59,14 @@ protected:
   void onDisable() override;
   void fixedFrameChanged() override;
 
-  /* Called once the URDF and SRDF are read (and again when they change). */
-  virtual void onRobotModelLoaded();
+  void onRobotModelLoaded() override;
   /* The namespace move_group's topics, services and actions are under ("" or "ns/"). */
   std::string moveGroupPrefix() const;
-  /* The frame the scene is expressed in: the SRDF's virtual joint parent, else the URDF root. */
-  const std::string& planningFrame() const { return planning_frame_; }
-  bool robotModelLoaded() const { return robot_loaded_; }
-
-  RobotKinematics kinematics_;
-  SrdfModel srdf_;
   Ogre::SceneNode* planning_scene_node_ = nullptr;  // at the planning frame, in the fixed frame
 
   rviz::Property* scene_category_;
   rviz::Property* robot_category_ = nullptr;
   rviz::StringProperty* move_group_ns_property_;
-  rviz::StringProperty* robot_description_property_;
   rviz::RosTopicProperty* planning_scene_topic_property_ = nullptr;
   rviz::StringProperty* scene_name_property_;
   rviz::BoolProperty* scene_enabled_property_;
@@ -93,7 +81,6 @@ protected:
   rviz::ColorProperty* attached_body_color_property_ = nullptr;
 
 private:
-  void loadRobotModel();
   void subscribe();
   void unsubscribe();
   void incomingPlanningScene(const moveit_msgs::PlanningScene::ConstPtr& scene);
@@ -106,10 +93,7 @@ private:
 
   const bool listen_to_planning_scene_;
   const bool show_scene_robot_;
-  bool robot_loaded_ = false;
-  float robot_retry_ = 0.0f;
   bool scene_changed_ = false;
-  std::string planning_frame_;
   ros::Subscriber scene_subscriber_;
   std::unique_ptr<RobotStateVisual> scene_robot_;
   std::map<std::string, moveit_msgs::CollisionObject> world_;

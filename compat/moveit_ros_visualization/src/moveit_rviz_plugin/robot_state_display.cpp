@@ -9,16 +9,11 @@
 #include <rviz/properties/string_property.h>
 
 #include "robot_frame_placement.h"
-#include "robot_model_loader.h"
 
 namespace moveit_rviz_plugin
 {
 RobotStateDisplay::RobotStateDisplay()
 {
-  robot_description_property_ =
-      new rviz::StringProperty("Robot Description", "robot_description",
-                               "The name of the ROS parameter where the URDF for the robot is loaded", this,
-                               SLOT(changedRobotDescription()), this);
   robot_state_topic_property_ =
       new rviz::RosTopicProperty("Robot State Topic", "display_robot_state",
                                  ros::message_traits::datatype<moveit_msgs::DisplayRobotState>(),
@@ -56,18 +51,9 @@ void RobotStateDisplay::onInitialize()
   robot_->setVisible(false);
 }
 
-void RobotStateDisplay::loadRobotModel()
+void RobotStateDisplay::onRobotModelLoaded()
 {
-  const RobotModelLoad load = moveit_rviz_plugin::loadRobotModel(robot_description_property_->getStdString(), kinematics_, srdf_);
-  if (!load.ok)
-  {
-    setStatusStd(rviz::StatusProperty::Error, "Robot Model", load.error);
-    return;
-  }
-  setStatusStd(rviz::StatusProperty::Ok, "Robot Model", "loaded from '" + load.key + "'");
-  planning_frame_ = load.planning_frame;
   root_link_name_property_->setStdString(kinematics_.rootLink());
-  robot_loaded_ = true;
   robot_->load(kinematics_);
   changedLook();
   changed_ = true;
@@ -76,7 +62,7 @@ void RobotStateDisplay::loadRobotModel()
 void RobotStateDisplay::onEnable()
 {
   Display::onEnable();
-  if (!robot_loaded_)
+  if (!robotModelLoaded())
     loadRobotModel();
   changedRobotStateTopic();
   changed_ = true;
@@ -93,16 +79,11 @@ void RobotStateDisplay::onDisable()
 void RobotStateDisplay::reset()
 {
   Display::reset();
-  robot_loaded_ = false;
+  forgetRobotModel();
   if (isEnabled())
     loadRobotModel();
 }
 
-void RobotStateDisplay::changedRobotDescription()
-{
-  if (isEnabled())
-    reset();
-}
 
 void RobotStateDisplay::changedRobotStateTopic()
 {
@@ -160,17 +141,9 @@ void RobotStateDisplay::incomingRobotState(const moveit_msgs::DisplayRobotState:
 void RobotStateDisplay::update(float wall_dt, float ros_dt)
 {
   Display::update(wall_dt, ros_dt);
-  if (!robot_loaded_)
-  {
-    robot_retry_ += wall_dt;
-    if (robot_retry_ < ROBOT_RETRY_PERIOD)
-      return;
-    robot_retry_ = 0.0f;
-    loadRobotModel();
-    if (!robot_loaded_)
-      return;
-  }
-  placeAtFrame(scene_node_, planning_frame_, context_, this);
+  if (!ensureRobotModel(wall_dt))
+    return;
+  placeAtFrame(scene_node_, planningFrame(), context_, this);
   if (changed_)
   {
     changed_ = false;

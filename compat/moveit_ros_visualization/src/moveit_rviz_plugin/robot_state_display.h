@@ -7,11 +7,8 @@
 
 #include <moveit_msgs/DisplayRobotState.h>
 #include <ros/ros.h>
-#include <rviz/display.h>
-
-#include "robot_kinematics.h"
+#include "robot_model_display.h"
 #include "robot_state_visual.h"
-#include "srdf_model.h"
 
 namespace rviz
 {
@@ -24,7 +21,7 @@ class StringProperty;
 
 namespace moveit_rviz_plugin
 {
-class RobotStateDisplay : public rviz::Display
+class RobotStateDisplay : public RobotModelDisplay
 {
   Q_OBJECT
 public:
@@ -35,7 +32,6 @@ public:
   void reset() override;
 
 private Q_SLOTS:
-  void changedRobotDescription();
   void changedRobotStateTopic();
   void changedLook();
 
@@ -43,11 +39,10 @@ private:
   void onInitialize() override;
   void onEnable() override;
   void onDisable() override;
-  void loadRobotModel();
+  void onRobotModelLoaded() override;
   void incomingRobotState(const moveit_msgs::DisplayRobotState::ConstPtr& message);
   void render();
 
-  rviz::StringProperty* robot_description_property_;
   rviz::RosTopicProperty* robot_state_topic_property_;
   rviz::StringProperty* root_link_name_property_;
   rviz::FloatProperty* robot_alpha_property_;
@@ -59,11 +54,6 @@ private:
 
   ros::Subscriber subscriber_;
   std::unique_ptr<RobotStateVisual> robot_;
-  RobotKinematics kinematics_;
-  SrdfModel srdf_;
-  std::string planning_frame_;
-  bool robot_loaded_ = false;
-  float robot_retry_ = 0.0f;
   bool changed_ = false;
   bool hidden_ = false;
   JointPositions positions_;

@@ -4,20 +4,12 @@
 
 #include <memory>
 
-#include <rviz/display.h>
-
-#include "robot_kinematics.h"
-#include "srdf_model.h"
+#include "robot_model_display.h"
 #include "trajectory_visualization.h"
-
-namespace rviz
-{
-class StringProperty;
-}
 
 namespace moveit_rviz_plugin
 {
-class TrajectoryDisplay : public rviz::Display
+class TrajectoryDisplay : public RobotModelDisplay
 {
   Q_OBJECT
 public:
@@ -27,21 +19,12 @@ public:
   void update(float wall_dt, float ros_dt) override;
   void reset() override;
 
-private Q_SLOTS:
-  void changedRobotDescription();
-
 private:
   void onInitialize() override;
   void onEnable() override;
   void onDisable() override;
-  void loadRobotModel();
+  void onRobotModelLoaded() override;
 
-  rviz::StringProperty* robot_description_property_;
   std::unique_ptr<TrajectoryVisualization> trajectory_visual_;
-  RobotKinematics kinematics_;
-  SrdfModel srdf_;
-  std::string planning_frame_;
-  bool robot_loaded_ = false;
-  float robot_retry_ = 0.0f;
 };
 }  // namespace moveit_rviz_plugin
