@@ -1,5 +1,6 @@
 """One step on a running MoveIt (the px100's, namespace px100) as a user's script takes it,
-for the rviz tests: ``add NAME X Y Z SIZE``, ``remove NAME``, ``attach NAME SIZE`` (a cube
+for the rviz tests: ``add NAME X Y Z SIZE``, ``cylinder NAME X Y Z HEIGHT RADIUS`` (upright),
+``remove NAME``, ``attach NAME SIZE`` (a cube
 on the gripper's ee_gripper_link), ``go STATE`` (a named state of interbotix_arm), ``plan
 STATE`` (plans only: move_group shows the path), ``gripper`` (prints the ee_gripper_link's
 position in the world, from TF), ``show LINK W S E A`` (publishes a DisplayRobotState on the
@@ -29,7 +30,7 @@ HAND_LINKS = [ROBOT + "/" + name for name in (
 def main(step, *arguments):
     moveit_commander.roscpp_initialize(sys.argv[:1])
     rospy.init_node("moveit_scene_step", anonymous=True)
-    if step in ("add", "remove", "attach"):
+    if step in ("add", "cylinder", "remove", "attach"):
         scene = moveit_commander.PlanningSceneInterface(ns=ROBOT, synchronous=True)
         pose = geometry_msgs.msg.PoseStamped()
         pose.pose.orientation.w = 1.0
@@ -38,6 +39,11 @@ def main(step, *arguments):
             pose.header.frame_id = "world"
             pose.pose.position.x, pose.pose.position.y, pose.pose.position.z = x, y, z
             scene.add_box(name, pose, (size, size, size))
+        elif step == "cylinder":
+            name, x, y, z, height, radius = arguments[0], *map(float, arguments[1:])
+            pose.header.frame_id = "world"
+            pose.pose.position.x, pose.pose.position.y, pose.pose.position.z = x, y, z
+            scene.add_cylinder(name, pose, height, radius)
         elif step == "remove":
             scene.remove_world_object(arguments[0])
         else:

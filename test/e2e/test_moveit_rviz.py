@@ -1,7 +1,8 @@
 """xsarm_moveit.launch (the px100, fake controllers) with its own rviz config: the
 MotionPlanning display (moveit_ros_visualization's C++ plugin) draws the planning scene.
 A box added by PlanningSceneInterface.add_box appears in the picture where its pose projects
-under the saved view, and goes when removed; a box attached to the gripper is drawn in the
+under the saved view, and goes when removed; an upright cylinder (a shape's z axis is rviz's
+y) is drawn between the projections of its two ends; a box attached to the gripper is drawn in the
 attached-body colour on the gripper, and moves with it when the arm moves. rviz's log names
 no plugin it could not load."""
 import json
@@ -20,6 +21,9 @@ STEPS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "moveit_scene_s
 BOX = (0.22, -0.12, 0.03)     # m, in the world: in front of the arm, clear of it
 BOX_SIZE = 0.06               # m
 HELD_SIZE = 0.04              # m, the attached cube
+POLE = (0.22, -0.12, 0.1)     # m: an upright cylinder's centre, where the box was
+POLE_HEIGHT = 0.2             # m
+POLE_RADIUS = 0.01            # m
 DRAWN_PIXELS = 150            # a 4-6 cm cube in this view covers about 400-900 pixels
 GONE_PIXELS = 10
 WHERE_PIXELS = 25             # px between a drawn object's centroid and its projected centre
@@ -82,6 +86,17 @@ def test_the_planning_scene_is_drawn_where_it_is(screen_env, results_dir):
                            < GONE_PIXELS, "the box to go")
         figures["green_removed"] = int(rviz_view.mask(removed, scene_green, rect).sum())
 
+        step(screen_env, "cylinder", "pole", *map(str, POLE), str(POLE_HEIGHT),
+             str(POLE_RADIUS))
+        pole = wait_for("pole", lambda p: rviz_view.mask(p, scene_green, rect).sum()
+                        > DRAWN_PIXELS, "the cylinder in the scene colour")
+        rows = np.nonzero(rviz_view.mask(pole, scene_green, rect).any(axis=1))[0]
+        ends = [view.project(np.add(POLE, (0, 0, dz)), rect)[1]
+                for dz in (-POLE_HEIGHT / 2, POLE_HEIGHT / 2)]
+        figures["pole_rows"] = [int(rows.min()), int(rows.max())]
+        figures["pole_ends_projected"] = sorted(ends)
+        step(screen_env, "remove", "pole")
+
         step(screen_env, "attach", "held", str(HELD_SIZE))
         for pose in ("Home", "Sleep"):
             step(screen_env, "go", pose)
@@ -101,6 +116,8 @@ def test_the_planning_scene_is_drawn_where_it_is(screen_env, results_dir):
     assert "PluginlibFactory" not in output and "failed to load" not in output, output[-3000:]
     assert np.hypot(*np.subtract(figures["box_centroid"], figures["box_projected"])) \
         < WHERE_PIXELS, figures
+    assert np.allclose(figures["pole_rows"], figures["pole_ends_projected"], atol=WHERE_PIXELS), \
+        figures
     for pose in ("Home", "Sleep"):
         assert np.hypot(*np.subtract(figures[f"held_{pose}"], figures[f"gripper_{pose}"])) \
             < WHERE_PIXELS, figures
