@@ -6,7 +6,7 @@ STATE`` (plans only: move_group shows the path), ``gripper`` (prints the ee_grip
 position in the world, from TF), ``show LINK W S E A`` (publishes a DisplayRobotState on the
 robot's display_robot_state: the arm at those joint values, LINK highlighted in yellow;
 prints the world positions of LINK's origin and of its child link's, from move_group's
-compute_fk)."""
+compute_fk), ``show_broken`` (a DisplayRobotState whose waist is NaN)."""
 import json
 import sys
 
@@ -25,6 +25,18 @@ TF_WAIT = 10.0    # s for the gripper's transform
 HAND_LINKS = [ROBOT + "/" + name for name in (
     "ee_arm_link", "gripper_link", "gripper_prop_link", "gripper_bar_link", "fingers_link",
     "left_finger_link", "right_finger_link", "ee_gripper_link")]
+
+
+def show_state(message):
+    """Publishes a DisplayRobotState on the robot's display_robot_state and stays until rviz
+    has had it."""
+    shown = rospy.Publisher(f"/{ROBOT}/display_robot_state", DisplayRobotState, queue_size=1,
+                            latch=True)
+    shown.publish(message)
+    deadline = rospy.get_time() + TF_WAIT
+    while shown.get_num_connections() == 0 and rospy.get_time() < deadline:
+        rospy.sleep(0.05)
+    rospy.sleep(1.0)   # latched: rviz has it once connected; the node stays that long
 
 
 def main(step, *arguments):
@@ -59,16 +71,19 @@ def main(step, *arguments):
             assert arm.go(wait=True), "the arm did not reach " + arguments[0]
         else:
             assert arm.plan()[0], "no plan to " + arguments[0]
+    elif step == "show_broken":
+        state = RobotState()
+        state.joint_state.name = ["waist", "shoulder", "elbow", "wrist_angle"]
+        state.joint_state.position = [float("nan"), 0.0, 0.0, 0.0]
+        show_state(DisplayRobotState(state=state))
     elif step == "show":
         link, joints = arguments[0], [float(value) for value in arguments[1:]]
         state = RobotState()
         state.joint_state.name = ["waist", "shoulder", "elbow", "wrist_angle"]
         state.joint_state.position = joints
-        shown = rospy.Publisher(f"/{ROBOT}/display_robot_state", DisplayRobotState,
-                                queue_size=1, latch=True)
         highlight = ObjectColor(id=link)
         highlight.color.r, highlight.color.g, highlight.color.a = 1.0, 1.0, 1.0
-        shown.publish(DisplayRobotState(state=state, highlight_links=[highlight]))
+        show_state(DisplayRobotState(state=state, highlight_links=[highlight]))
         fk = rospy.ServiceProxy(f"/{ROBOT}/compute_fk", GetPositionFK)
         fk.wait_for_service(TF_WAIT)
         child = URDF.from_xml_string(rospy.get_param(f"/{ROBOT}/robot_description")).child_map[
@@ -76,10 +91,6 @@ def main(step, *arguments):
         found = [pose.pose.position for pose in fk(
             header=rospy.Header(frame_id="world"), fk_link_names=[link, child],
             robot_state=state).pose_stamped]
-        deadline = rospy.get_time() + TF_WAIT
-        while shown.get_num_connections() == 0 and rospy.get_time() < deadline:
-            rospy.sleep(0.05)
-        rospy.sleep(1.0)   # latched: rviz has it once connected; the node stays that long
         print(json.dumps([[p.x, p.y, p.z] for p in found]))
     elif step == "gripper":
         buffer = tf2_ros.Buffer()

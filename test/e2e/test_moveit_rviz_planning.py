@@ -7,7 +7,8 @@ marker was dragged (the display's compute_ik call: the gripper, by TF, within 5 
 marker); the panel's Scene
 Objects tab, clicked with xdotool, adds its box, drawn in the display's default Scene Color
 where the box's default pose projects; the RobotState display draws a DisplayRobotState
-with its highlighted link in the highlight's colour where the link projects."""
+with its highlighted link in the highlight's colour where the link projects, after one
+whose joint is NaN was refused (rviz keeps running and says why in the display's status)."""
 import json
 import os
 import subprocess
@@ -106,6 +107,7 @@ def test_paths_animate_and_the_panel_plans_and_executes(screen_env, results_dir)
         figures["marker"] = json.loads(run(screen_env, "rviz_remote_control.py", "--marker",
                                            *map(str, MARKER_JOINTS)))
 
+        run(screen_env, "moveit_scene_steps.py", "show_broken")
         ends = json.loads(run(screen_env, "moveit_scene_steps.py", "show", HIGHLIGHTED_LINK,
                               *map(str, SHOWN_STATE)))
         link_pixel = rviz_view.OrbitView(os.path.join(FIXTURE, "px100_planning.rviz")).project(

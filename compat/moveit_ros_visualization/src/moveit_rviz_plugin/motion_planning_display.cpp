@@ -29,6 +29,8 @@
 #include <rviz/properties/float_property.h>
 #include <std_msgs/String.h>
 
+#include "message_checks.h"
+
 namespace moveit_rviz_plugin
 {
 namespace
@@ -102,6 +104,12 @@ moveit_msgs::RobotState robotStateMsg(const JointPositions& positions)
 
 void mergeRobotState(const moveit_msgs::RobotState& message, JointPositions& positions)
 {
+  if (!nonFiniteJoint(message.joint_state).empty())
+  {
+    ROS_ERROR_STREAM("MotionPlanning: a robot state whose joint '" << nonFiniteJoint(message.joint_state)
+                                                                   << "' is not a finite number: ignored");
+    return;
+  }
   const sensor_msgs::JointState& joints = message.joint_state;
   for (size_t i = 0; i < joints.name.size() && i < joints.position.size(); ++i)
     positions[joints.name[i]] = joints.position[i];
@@ -685,6 +693,8 @@ void MotionPlanningDisplay::goalMarkerFeedback(const visualization_msgs::Interac
 {
   if (feedback->event_type != visualization_msgs::InteractiveMarkerFeedback::POSE_UPDATE &&
       feedback->event_type != visualization_msgs::InteractiveMarkerFeedback::MOUSE_UP)
+    return;
+  if (!finite(feedback->pose))
     return;
   marker_pose_ = feedback->pose;
   marker_pose_pending_ = true;

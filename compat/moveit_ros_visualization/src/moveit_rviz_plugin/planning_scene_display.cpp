@@ -4,6 +4,7 @@
  * (an ADD replaces an object of the same id, REMOVE with an empty id clears the world), and
  * drawn at the planning frame's pose in the fixed frame. */
 #include "planning_scene_display.h"
+#include "message_checks.h"
 #include "robot_frame_placement.h"
 
 #include <OgreSceneManager.h>
@@ -194,6 +195,13 @@ void PlanningSceneDisplay::unsubscribe()
 
 void PlanningSceneDisplay::incomingPlanningScene(const moveit_msgs::PlanningScene::ConstPtr& scene)
 {
+  const std::string bad_joint = nonFiniteJoint(scene->robot_state.joint_state);
+  if (!bad_joint.empty())
+  {
+    setStatusStd(rviz::StatusProperty::Error, "Planning Scene",
+                 "a scene whose joint '" + bad_joint + "' is not a finite number: scene ignored");
+    return;
+  }
   const bool diff = scene->is_diff;
   if (!diff)
   {
@@ -210,9 +218,21 @@ void PlanningSceneDisplay::incomingPlanningScene(const moveit_msgs::PlanningScen
   if (!scene->robot_state.is_diff)
     attached_.clear();
   for (const auto& object : scene->robot_state.attached_collision_objects)
-    applyAttachedObject(object);
+    if (nonFinitePart(object.object).empty())
+      applyAttachedObject(object);
+  std::string refused;
   for (const auto& object : scene->world.collision_objects)
-    applyWorldObject(object);
+  {
+    const std::string part = nonFinitePart(object);
+    if (part.empty())
+      applyWorldObject(object);
+    else
+      refused += (refused.empty() ? "" : "; ") + object.id + " (" + part + " not finite)";
+  }
+  if (refused.empty())
+    deleteStatusStd("Refused Objects");
+  else
+    setStatusStd(rviz::StatusProperty::Error, "Refused Objects", refused);
   for (const auto& color : scene->object_colors)
     object_colors_[color.id] = color.color;
   scene_changed_ = true;

@@ -8,6 +8,7 @@
 #include <rviz/properties/ros_topic_property.h>
 #include <rviz/properties/string_property.h>
 
+#include "message_checks.h"
 #include "robot_frame_placement.h"
 
 namespace moveit_rviz_plugin
@@ -123,6 +124,13 @@ void RobotStateDisplay::incomingRobotState(const moveit_msgs::DisplayRobotState:
     setStatusStd(rviz::StatusProperty::Error, "Robot State",
                  std::to_string(joints.name.size()) + " joint names for " + std::to_string(joints.position.size()) +
                      " positions: state ignored");
+    return;
+  }
+  const std::string bad_joint = nonFiniteJoint(joints);
+  if (!bad_joint.empty())
+  {
+    setStatusStd(rviz::StatusProperty::Error, "Robot State",
+                 "joint '" + bad_joint + "' is not a finite number: state ignored");
     return;
   }
   if (!message->state.is_diff)

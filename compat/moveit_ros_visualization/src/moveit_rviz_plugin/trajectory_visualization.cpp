@@ -16,6 +16,8 @@
 #include <rviz/properties/int_property.h>
 #include <rviz/properties/ros_topic_property.h>
 
+#include "message_checks.h"
+
 namespace moveit_rviz_plugin
 {
 namespace
@@ -159,6 +161,13 @@ void TrajectoryVisualization::showTrajectory(const moveit_msgs::DisplayTrajector
   // the start state over the current state, then each trajectory's points over the last one
   JointPositions state = current_;
   const sensor_msgs::JointState& start = message.trajectory_start.joint_state;
+  if (!nonFiniteJoint(start).empty())
+  {
+    display_->setStatusStd(rviz::StatusProperty::Error, "Trajectory",
+                           "the start state's joint '" + nonFiniteJoint(start) +
+                               "' is not a finite number: path not shown");
+    return;
+  }
   for (size_t i = 0; i < start.name.size() && i < start.position.size(); ++i)
     state[start.name[i]] = start.position[i];
   std::vector<Waypoint> waypoints;
@@ -169,6 +178,11 @@ void TrajectoryVisualization::showTrajectory(const moveit_msgs::DisplayTrajector
     double previous_time = 0.0;
     for (const auto& point : joints.points)
     {
+      if (!finite(point.positions))
+      {
+        problem = "a waypoint's positions are not all finite numbers";
+        break;
+      }
       if (point.positions.size() != joints.joint_names.size())
       {
         problem = "a waypoint has " + std::to_string(point.positions.size()) + " positions for " +
