@@ -1,6 +1,10 @@
 """Goal constraints (moveit_msgs/Constraints) as MoveIt's constraint samplers read them:
-joint constraints give one joint-space goal (clamped into the bounds when the tolerance
-reaches them); a position constraint on a link (a sphere or box region, as
+joint constraints give one joint-space goal, each constrained joint drawn uniformly from
+its tolerance band within its bounds (JointConstraintSampler::sample,
+moveit_core/constraint_samplers/src/default_constraint_samplers.cpp l. 184-186 on
+noetic-devel: so a goal equal to the start is never the start itself to the last bit, and
+a path to it has a segment of non-zero length, as a controller needs strictly increasing
+times); a position constraint on a link (a sphere or box region, as
 moveit_commander writes for a pose or position target), with or without an orientation
 constraint, is sampled by the group's IK solver from random seeds; each sample must lie
 within the bounds, satisfy every constraint of the set and be collision-free.
@@ -131,7 +135,7 @@ def satisfied(scene: PlanningScene, positions: Mapping[str, float], constraints:
 
 
 def joint_goal(scene: PlanningScene, group: str, start: Mapping[str, float],
-               constraints: Constraints) -> Dict[str, float]:
+               constraints: Constraints, rng: np.random.Generator) -> Dict[str, float]:
     goal = dict(start)
     variables = scene.model.group(group).variables
     for joint in constraints.joint_constraints:
@@ -149,7 +153,7 @@ def joint_goal(scene: PlanningScene, group: str, start: Mapping[str, float],
             raise GoalError(MoveItErrorCodes.INVALID_GOAL_CONSTRAINTS,
                             f"joint '{name}' goal {joint.position:.4f} is outside its bounds "
                             f"{bounds.lower:.4f} to {bounds.upper:.4f}")
-        goal[name] = min(max(joint.position, low), high)
+        goal[name] = float(rng.uniform(low, high)) if high > low else low
         if name not in variables:
             raise GoalError(MoveItErrorCodes.INVALID_GOAL_CONSTRAINTS,
                             f"joint '{name}' is not in group '{group}'")

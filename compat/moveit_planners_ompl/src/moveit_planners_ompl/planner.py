@@ -244,7 +244,7 @@ class OmplPlanner:
         for constraints in sets:
             if constraints.joint_constraints and not (constraints.position_constraints or
                                                       constraints.orientation_constraints):
-                goal = joint_goal(scene, group, start, constraints)
+                goal = joint_goal(scene, group, start, constraints, rng)
                 hit = scene.contacts(goal, group)
                 if hit:
                     found.collisions += hit

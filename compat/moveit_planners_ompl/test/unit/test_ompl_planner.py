@@ -102,6 +102,24 @@ def test_a_joint_goal_around_a_wall(setup):
     assert dense_free(scene, result)
 
 
+def test_a_goal_at_the_start_is_sampled_in_its_tolerance_and_timed_strictly(setup):
+    """MoveIt's JointConstraintSampler draws each joint within its tolerance band
+    (default_constraint_samplers.cpp l. 184-186): a goal equal to the start is not the start
+    to the last bit, so the path's times strictly increase (a trajectory controller refuses
+    equal ones: the gripper's 'open' when already open refused in the simulation)."""
+    model, scene, planner = setup
+    here = [0.2, 0.1, -0.1, 0.3]
+    scene.set_state(dict(zip(ARM, here)))
+    ends = []
+    for _ in range(3):
+        result = planner.plan(scene, joint_request(here))
+        assert result.code == Codes.SUCCESS, result.message
+        assert np.all(np.diff(result.timed.times) > 0), result.timed.times
+        ends.append(result.timed.positions[-1])
+        np.testing.assert_allclose(ends[-1], here, atol=1e-4)
+        assert np.any(ends[-1] != here)
+
+
 def test_a_position_goal_lands_the_gripper_there(setup):
     model, scene, planner = setup
     target = (0.15, 0.1, 0.12)
