@@ -36,7 +36,6 @@ public:
   /* The node whose pose is the object's frame (its header frame, or the link it is attached
    * to). */
   Ogre::SceneNode* node() const { return node_; }
-  size_t shapeCount() const { return shapes_.size(); }
 
 private:
   struct DrawnShape

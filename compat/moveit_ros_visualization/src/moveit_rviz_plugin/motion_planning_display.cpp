@@ -435,12 +435,12 @@ void MotionPlanningDisplay::update(float wall_dt, float ros_dt)
     query_start_robot_->setVisible(isEnabled() && query_start_state_property_->getBool());
     query_goal_robot_->setVisible(isEnabled() && query_goal_state_property_->getBool());
   }
-  refreshSceneObjectList();
   if (marker_display_ && marker_display_->isEnabled())
     marker_display_->update(wall_dt, ros_dt);
 }
 
-void MotionPlanningDisplay::refreshSceneObjectList()
+// the Scene Objects list follows the world as drawn
+void MotionPlanningDisplay::onSceneRendered()
 {
   QStringList names;
   for (const auto& object : worldObjects())

@@ -64,6 +64,7 @@ private:
   void onEnable() override;
   void onDisable() override;
   void onRobotModelLoaded() override;
+  void onSceneRendered() override;
 
   std::string currentGroup() const;
   void fillStateChoices();
@@ -79,7 +80,6 @@ private:
   void publishGoalMarker();
   void goalMarkerFeedback(const visualization_msgs::InteractiveMarkerFeedbackConstPtr& feedback);
   void applyMarkerPose();
-  void refreshSceneObjectList();
 
   void remotePlan(const std_msgs::EmptyConstPtr&);
   void remoteExecute(const std_msgs::EmptyConstPtr&);

@@ -314,17 +314,18 @@ void PlanningSceneDisplay::placePlanningFrame()
   placeAtFrame(planning_scene_node_, planningFrame(), context_, this);
 }
 
-bool PlanningSceneDisplay::objectPose(const std::string& frame, Ogre::Vector3& position, Ogre::Quaternion& orientation)
+bool PlanningSceneDisplay::objectPose(const std::string& frame, const LinkPoses& links, Ogre::Vector3& position,
+                                      Ogre::Quaternion& orientation)
 {
   position = Ogre::Vector3::ZERO;
   orientation = Ogre::Quaternion::IDENTITY;
   if (frame.empty() || frame == planningFrame() || frame == "/" + planningFrame())
     return true;
-  if (kinematics_.urdf().getLink(frame))
+  auto link = links.find(frame);
+  if (link != links.end())
   {
     // a robot link: where the scene's state puts it (the planning frame is the root's frame)
-    const LinkPoses poses = kinematics_.linkPoses(scene_joints_);
-    const KDL::Frame& pose = poses.at(frame);
+    const KDL::Frame& pose = link->second;
     double x, y, z, w;
     pose.M.GetQuaternion(x, y, z, w);
     position = Ogre::Vector3(pose.p.x(), pose.p.y(), pose.p.z());
@@ -353,6 +354,7 @@ void PlanningSceneDisplay::renderScene()
 {
   std::map<std::string, std::unique_ptr<CollisionObjectVisual>> drawn;
   std::string unplaced;
+  const LinkPoses links = kinematics_.linkPoses(scene_joints_);
   for (const auto& entry : world_)
   {
     auto visual = std::move(world_visuals_[entry.first]);
@@ -361,7 +363,7 @@ void PlanningSceneDisplay::renderScene()
     visual->setShapes(entry.second);
     Ogre::Vector3 position;
     Ogre::Quaternion orientation;
-    if (!objectPose(entry.second.header.frame_id, position, orientation))
+    if (!objectPose(entry.second.header.frame_id, links, position, orientation))
       unplaced += (unplaced.empty() ? "" : ", ") + entry.first + " (frame '" + entry.second.header.frame_id + "')";
     visual->node()->setPosition(position);
     visual->node()->setOrientation(orientation);
@@ -379,8 +381,13 @@ void PlanningSceneDisplay::renderScene()
     std::vector<moveit_msgs::AttachedCollisionObject> attached;
     for (const auto& entry : attached_)
       attached.push_back(entry.second);
-    scene_robot_->update(scene_joints_, attached);
+    scene_robot_->update(links, attached);
   }
+  onSceneRendered();
+}
+
+void PlanningSceneDisplay::onSceneRendered()
+{
 }
 
 void PlanningSceneDisplay::fixedFrameChanged()

@@ -60,6 +60,8 @@ protected:
   void fixedFrameChanged() override;
 
   void onRobotModelLoaded() override;
+  /* Called after each redraw of a changed scene (the world's objects as just drawn). */
+  virtual void onSceneRendered();
   /* The namespace move_group's topics, services and actions are under ("" or "ns/"). */
   std::string moveGroupPrefix() const;
   Ogre::SceneNode* planning_scene_node_ = nullptr;  // at the planning frame, in the fixed frame
@@ -89,7 +91,8 @@ private:
   void renderScene();
   void placePlanningFrame();
   Ogre::ColourValue objectColor(const std::string& id) const;
-  bool objectPose(const std::string& frame, Ogre::Vector3& position, Ogre::Quaternion& orientation);
+  bool objectPose(const std::string& frame, const LinkPoses& links, Ogre::Vector3& position,
+                  Ogre::Quaternion& orientation);
 
   const bool listen_to_planning_scene_;
   const bool show_scene_robot_;

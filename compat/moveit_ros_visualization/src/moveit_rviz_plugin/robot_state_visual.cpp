@@ -81,15 +81,20 @@ void RobotStateVisual::clear()
 void RobotStateVisual::update(const JointPositions& positions,
                               const std::vector<moveit_msgs::AttachedCollisionObject>& attached)
 {
+  if (kinematics_)
+    update(kinematics_->linkPoses(positions), attached);
+}
+
+void RobotStateVisual::update(const LinkPoses& poses, const std::vector<moveit_msgs::AttachedCollisionObject>& attached)
+{
   if (!kinematics_)
     return;
-  poses_ = kinematics_->linkPoses(positions);
-  robot_->update(PosesLinkUpdater(poses_));
+  robot_->update(PosesLinkUpdater(poses));
   std::map<std::string, std::unique_ptr<CollisionObjectVisual>> drawn;
   for (const auto& body : attached)
   {
-    auto link = poses_.find(body.link_name);
-    if (link == poses_.end())
+    auto link = poses.find(body.link_name);
+    if (link == poses.end())
       continue;
     auto visual = std::move(attached_[body.object.id]);
     if (!visual)

@@ -37,6 +37,8 @@ public:
 
   /* Poses the links at `positions` and draws `attached` on their links. */
   void update(const JointPositions& positions, const std::vector<moveit_msgs::AttachedCollisionObject>& attached);
+  /* The same with the links' poses already computed (RobotKinematics::linkPoses). */
+  void update(const LinkPoses& poses, const std::vector<moveit_msgs::AttachedCollisionObject>& attached);
 
   /* The root link's pose in the display's frame. */
   void setPose(const Ogre::Vector3& position, const Ogre::Quaternion& orientation);
@@ -53,11 +55,6 @@ public:
   /* Highlights (DisplayRobotState's highlight_links): each named link in its colour. */
   void setHighlights(const std::map<std::string, Ogre::ColourValue>& highlights);
 
-  rviz::Robot& robot() { return *robot_; }
-  /* Link poses of the last update, in the root link's frame. */
-  const LinkPoses& linkPoses() const { return poses_; }
-  size_t attachedBodyCount() const { return attached_.size(); }
-
 private:
   void applyColors();
 
@@ -65,7 +62,6 @@ private:
   Ogre::SceneNode* node_;
   std::unique_ptr<rviz::Robot> robot_;
   const RobotKinematics* kinematics_ = nullptr;
-  LinkPoses poses_;
   std::map<std::string, std::unique_ptr<CollisionObjectVisual>> attached_;
   bool has_color_ = false;
   Ogre::ColourValue color_;

@@ -53,9 +53,6 @@ public:
    * messages leave out. */
   void setCurrentState(const JointPositions& positions) { current_ = positions; }
 
-  bool animating() const { return animating_; }
-  size_t displayedWaypoint() const { return current_waypoint_; }
-
 private Q_SLOTS:
   void changedTrajectoryTopic();
   void changedRobotPathAlpha();
