@@ -512,6 +512,12 @@ def _parse_model(text: str, source: str, warnings: _Warnings) -> ModelSpec:
         model = _include(include, source, warnings) if include is not None else None
         if model is None:
             raise SdfError(f"{source}: no <model> in it")
+        if include.find("pose") is None:
+            # gazebo_ros writes the spawn's pose into the <include> (the included model's
+            # own <pose> gives way to it), composed with the include's pose, none here
+            # (gazebo_ros_pkgs noetic-devel f9e1a46,
+            # gazebo_ros/src/gazebo_ros_api_plugin.cpp:2459-2475, updateSDFAttributes)
+            model.pose = ZERO_POSE
         return model
     return _model(element, source, os.getcwd(), warnings)
 

@@ -346,10 +346,13 @@ class World:
             raise SimError(f"a model named '{spec.name}' exists already; delete it or pick "
                            "another name")
         if position is not None:
+            # gazebo_ros's spawn composes the model's own <pose> with the request's
+            # initial_pose: initial_pose * <pose> (gazebo_ros_pkgs noetic-devel f9e1a46,
+            # gazebo_ros/src/gazebo_ros_api_plugin.cpp:761, :2459-2475, updateSDFAttributes)
             orientation = _checked_state(position, orientation or (0, 0, 0, 1), (0, 0, 0),
                                          (0, 0, 0))
             roll_pitch_yaw = pb.getEulerFromQuaternion(list(orientation))
-            spec.pose = (*position, *roll_pitch_yaw)
+            spec.pose = compose6((*position, *roll_pitch_yaw), spec.pose)
         if spec.urdf:  # articulated: built as the URDF robot it converts to, as Gazebo would
             root = compose6(spec.pose, spec.urdf_root_pose)
             return self.spawn_urdf(spec.name, spec.urdf, *pose6_to_position_quaternion(root),

@@ -3,6 +3,9 @@ master (the physics thread run inline), against Noetic's gazebo_ros_api_plugin.c
 (gazebo_ros_pkgs noetic-devel f9e1a46, gazebo_ros/src/gazebo_ros_api_plugin.cpp): what a
 request does, what it answers, and its answer when it cannot be done (sim_bridge/README.md,
 the services' table)."""
+import math
+
+import pybullet as pb
 import pytest
 from geometry_msgs.msg import Pose
 from std_srvs.srv import Empty, EmptyRequest
@@ -184,3 +187,56 @@ def test_a_model_state_without_an_orientation_is_upright(node):
     position, orientation = node.world.pose("a")
     assert position[0] == pytest.approx(2.0, abs=1e-6)
     assert orientation == pytest.approx((0, 0, 0, 1), abs=1e-6)
+
+
+CRATE_SDF = """<sdf version="1.6"><model name="crate"><pose>1 0 0.5 0 0 1.5707963267948966</pose>
+  <link name="link"><inertial><mass>1</mass><inertia><ixx>0.01</ixx><iyy>0.01</iyy>
+  <izz>0.01</izz></inertia></inertial><collision name="c"><geometry><box>
+  <size>0.2 0.2 0.2</size></box></geometry></collision></link></model></sdf>"""
+
+
+def _spawn_sdf_at(node, name, xml, x, yaw_quaternion_zw):
+    pose = Pose()
+    pose.position.x = x
+    pose.orientation.z, pose.orientation.w = yaw_quaternion_zw
+    return call(node, SpawnModel, node._spawn_sdf, model_name=name, model_xml=xml,
+                robot_namespace="/", initial_pose=pose, reference_frame="")
+
+
+def test_an_sdf_models_own_pose_is_composed_with_the_initial_pose(node):
+    """spawnSDFModel hands initial_pose to updateSDFAttributes (:761), which composes the
+    model's own <pose> into it: initial_pose * <pose> (:2459-2475). A crate whose <pose>
+    is 1 m ahead, 0.5 m up and turned 90 degrees, spawned at x = 2 turned 90 degrees, is at
+    (2, 1, 0.5) turned 180 degrees: pybullet's body says so (before: (2, 0, 0), 90
+    degrees, the model's own pose dropped)."""
+    half_turn = (math.sin(math.pi / 4), math.cos(math.pi / 4))
+    answer = _spawn_sdf_at(node, "crate", CRATE_SDF, 2.0, half_turn)
+    assert answer.success, answer.status_message
+    body = node.world.models["crate"].body
+    position, orientation = pb.getBasePositionAndOrientation(
+        body, physicsClientId=node.world.client)
+    assert position == pytest.approx((2.0, 1.0, 0.5), abs=1e-6)
+    assert abs(orientation[2]) == pytest.approx(1.0, abs=1e-6)  # yaw pi
+
+
+def test_an_included_models_own_pose_gives_way_to_the_spawn_pose(node, tmp_path,
+                                                                 monkeypatch):
+    """spawn_model -database sends <world><include>: gazebo_ros writes the composed pose
+    into the include (:2459-2475), and an include's <pose> replaces the included model's
+    own, so with none in the include the model is at initial_pose itself; with one, at
+    initial_pose * the include's <pose>."""
+    folder = tmp_path / "crate"
+    folder.mkdir()
+    (folder / "model.sdf").write_text(CRATE_SDF)
+    monkeypatch.setenv("GAZEBO_MODEL_PATH", str(tmp_path))
+    plain = ('<sdf version="1.6"><world name="default"><include><uri>model://crate</uri>'
+             '</include></world></sdf>')
+    placed = ('<sdf version="1.6"><world name="default"><include><uri>model://crate</uri>'
+              '<pose>0 0 0.3 0 0 0</pose></include></world></sdf>')
+    assert _spawn_sdf_at(node, "a", plain, 2.0, (0.0, 1.0)).success
+    assert _spawn_sdf_at(node, "b", placed, -2.0, (0.0, 1.0)).success
+    client = node.world.client
+    a, _ = pb.getBasePositionAndOrientation(node.world.models["a"].body, physicsClientId=client)
+    b, _ = pb.getBasePositionAndOrientation(node.world.models["b"].body, physicsClientId=client)
+    assert a == pytest.approx((2.0, 0.0, 0.0), abs=1e-6)
+    assert b == pytest.approx((-2.0, 0.0, 0.3), abs=1e-6)
