@@ -202,3 +202,25 @@ def test_no_cmd_timeout_keeps_the_command(world, bus):
     """gazebo_plugins/src/gazebo_ros_planar_move.cpp:117: cmdTimeout defaults to -1, and a
     negative timeout is off (:189)."""
     assert displacement_after_a_command(world, bus) == pytest.approx(0.1, abs=1e-4)
+
+
+def test_reset_world_keeps_the_command_and_the_last_odometry_pose(world, bus):
+    """Noetic's plugin has no Reset (gazebo_plugins/include/gazebo_plugins/
+    gazebo_ros_planar_move.h:47-56 declares Load, UpdateChild and FiniChild only): after
+    reset_world the model moves on at the last command from its spawn pose, and the first
+    odometry after it measures its twist from the last pose published before the reset
+    (:300-302), so it reports the jump back. Before: the command was dropped (the model
+    stood) and the odometry started over from the reset pose."""
+    world.spawn_urdf("bot", robot(), (0, 0, 0))
+    command(bus, forward=0.5)
+    run(world, 1.0)
+    (x_before, _, _), _ = world.pose("bot")
+    published = len(bus.published["/odom"])
+    world.reset()
+    run(world, 0.06)  # one odometry period (more than 1/20 s) and a step
+    first = bus.published["/odom"][published]
+    assert first.twist.twist.linear.x < -5.0  # about -x_before over 51 ms: the jump back
+    run(world, 0.94)
+    (x, _, _), _ = world.pose("bot")
+    assert x == pytest.approx(0.5, abs=0.01)
+    assert x_before == pytest.approx(0.5, abs=0.01)

@@ -7,9 +7,10 @@ gazebo_plugins/src/gazebo_ros_skid_steer_drive.cpp): the message's position.z is
 import os
 
 import pytest
+from geometry_msgs.msg import Twist
 
 from urdf_tools.xacro_loader import expand
-from world_fixtures import DATA
+from world_fixtures import DATA, run
 
 TAG = "<broadcastTF>true</broadcastTF>"
 
@@ -74,3 +75,31 @@ def test_the_covariance_defaults(world, bus):
     assert diagonal(odometry.twist.covariance) == expected
     off_diagonal = [v for i, v in enumerate(odometry.pose.covariance) if i % 7]
     assert off_diagonal == [0.0] * 30
+
+
+def wheel_speeds(world, name="skid"):
+    """The four wheels' true joint speeds (rad/s): left front, right front, left rear,
+    right rear."""
+    robot = world.model(name).robot
+    joints = [f"{wheel}_wheel_joint" for wheel in ("left_front", "right_front", "left_rear",
+                                                   "right_rear")]
+    return [velocity for _, velocity, _ in robot.joint_states(joints)]
+
+
+def test_reset_world_keeps_the_last_command(world, bus):
+    """Noetic's plugin has no Reset (gazebo_plugins/include/gazebo_plugins/
+    gazebo_ros_skid_steer_drive.h:68-77 declares Load, UpdateChild and FiniChild only), so
+    after reset_world the wheels go on at the last command's speed from the spawn pose.
+    Before: the command was dropped and the wheels stopped."""
+    world.spawn_urdf("skid", skid_bot(), (0, 0, 0.1))
+    run(world, 0.3)
+    message = Twist()
+    message.linear.x = 0.4
+    bus.subscriptions["/cmd_vel"](message)
+    run(world, 0.5)
+    world.reset()
+    assert wheel_speeds(world) == pytest.approx([0.0] * 4, abs=1e-9)  # reset: at rest
+    run(world, 0.5)
+    assert wheel_speeds(world) == pytest.approx([0.4 / 0.08] * 4, rel=0.02)
+    (x, _, _), _ = world.pose("skid")
+    assert x > 0.1

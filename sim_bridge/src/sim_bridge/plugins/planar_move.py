@@ -11,7 +11,8 @@ hard-coded); written, they are named as tags the plugin does not read.
 Every step linear.x, linear.y and angular.z of the command (body frame) set the model's
 velocity, and its vertical velocity to 0 (a model in the air sinks by g dt² a step instead of
 falling). The odometry is the true pose with z 0, its twist the change of the pose since the
-last publication.
+last publication. A reset of the world changes nothing in the plugin, as Noetic's has no
+Reset.
 """
 from __future__ import annotations
 
@@ -122,10 +123,7 @@ class PlanarMove(DriveBase):
         self.odom_out.publish(odometry)
 
     def reset(self, now_ns: int) -> None:
-        """Noetic's plugin has no Reset (after reset_simulation its odometry waits for the
-        clock to catch up, the last command kept); here the command is dropped and the
-        odometry starts over from the pose the model is reset to."""
-        super().reset(now_ns)
-        self.sideways = 0.0
-        self._commanded_ns = None
-        self._last_ns = self._last_pose = None
+        """Noetic's plugin has no Reset (gazebo_plugins/include/gazebo_plugins/
+        gazebo_ros_planar_move.h:47-56 declares none, so ModelPlugin's empty one runs): the last command stays and moves the model on from the
+        reset pose, and the next odometry's twist is the change from the last published pose
+        (before the reset) over the time since."""

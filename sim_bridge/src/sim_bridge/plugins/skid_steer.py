@@ -63,5 +63,6 @@ class SkidSteer(DriveBase):
                                         message_z=0.0)
 
     def reset(self, now_ns: int) -> None:
-        super().reset(now_ns)
-        self.rate.reset(now_ns)
+        """Noetic's plugin has no Reset (gazebo_plugins/include/gazebo_plugins/
+        gazebo_ros_skid_steer_drive.h:68-77 declares none, so ModelPlugin's empty one runs): after reset_world the wheels keep turning at the last
+        command and the updates keep their schedule."""
