@@ -259,18 +259,24 @@ def construction_cone() -> List[Part]:
     def radius(z: float) -> float:  # on the straight face from the foot to the top
         return r_mid + (r_base - r_mid) * (z_mid - z) / (z_mid - z_base)
 
-    # the cone's outline, cut into orange and white pieces at the bands
-    pieces: List[Tuple[Colour, List[Tuple[float, float]]]] = []
-    body = [(0.0, CONE_FOOT_HEIGHT)] + CONE_OUTLINE[:3]
+    # the cone's outline, cut into orange and white pieces at the bands, and the foot's
+    # ring, the bevel and the cone apart: each piece is convex, so that a simulator that
+    # collides with one convex hull per geometry (pybullet) collides with the cone itself
+    pieces: List[Tuple[Colour, List[Tuple[float, float]]]] = [
+        (ORANGE, [(0.0, CONE_FOOT_HEIGHT)] + CONE_OUTLINE[:2]),
+        (ORANGE, CONE_OUTLINE[1:3])]
+    body = CONE_OUTLINE[2:3]
     for low, high in CONE_BANDS:
         pieces.append((ORANGE, body + [(radius(low), low)]))
         pieces.append((WHITE, [(radius(low), low), (radius(high), high)]))
         body = [(radius(high), high)]
     pieces.append((ORANGE, body + [(r_mid, z_mid), (r_top, z_top), (0.0, z_top)]))
     parts = [_cone_foot()]
-    for index, (colour, piece) in enumerate(pieces):
+    counts = {ORANGE: 0, WHITE: 0}
+    for colour, piece in pieces:
         kind = "band" if colour == WHITE else "cone"
-        parts.append(_revolved(f"{kind}_{index // 2}", colour, piece))
+        parts.append(_revolved(f"{kind}_{counts[colour]}", colour, piece))
+        counts[colour] += 1
     return [part.scaled((CONE_SCALE,) * 3) for part in parts]
 
 

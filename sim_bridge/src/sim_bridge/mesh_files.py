@@ -19,9 +19,11 @@ converted, with trimesh (pycollada as its Collada reader), into a Wavefront OBJ 
   vertices are taken in the link's frame as written, whatever the axis says (Gazebo's
   loader never parses it, gazebo-classic issue #1305; RViz neither, rviz issue #1045). A
   ``Y_UP`` file that looks right in Gazebo and RViz looks the same here;
-- node transforms (``<matrix>``, ``<translate>``, ``<rotate>``, ``<scale>``) are applied,
-  all geometry of the file's scene is one mesh; materials and textures are left out (the
-  URDF's or SDF's colour shows);
+- node transforms (``<matrix>``, ``<translate>``, ``<rotate>``, ``<scale>``) are applied;
+  each placed geometry of the file's scene is its own OBJ object (``o``), which pybullet
+  makes its own convex hull when the mesh is a moving body's collision (one hull of the
+  whole file would fill in what lies between the parts; Gazebo collides with the
+  triangles); materials and textures are left out (the URDF's or SDF's colour shows);
 - the URDF ``scale`` attribute or SDF ``<scale>`` is not baked in: the caller passes it on
   to pybullet as for any mesh.
 
@@ -48,7 +50,7 @@ from typing import List, Tuple
 import numpy as np
 
 # Bumped when the conversion's output changes, so that old cached files are not used.
-CONVERTER_VERSION = "1"
+CONVERTER_VERSION = "2"
 READ_FORMATS = "OBJ, STL and Collada (.dae)"
 _BINARY_STL_HEADER = 80
 _BINARY_STL_TRIANGLE = 50
@@ -230,20 +232,28 @@ def _convert(path: str, kind: str, target: str) -> None:
         raise MeshError("needs converting, and the Python package trimesh is missing "
                         "(tools/requirements.txt; run make)") from None
     try:
-        mesh = trimesh.load(path, file_type=kind, force="mesh", process=False)
+        # a scene, not one mesh: each placed geometry stays its own OBJ object, which
+        # pybullet makes its own convex hull in a moving body's collision shape
+        scene = trimesh.load(path, file_type=kind, force="scene", process=False)
     except ImportError as error:  # pycollada, trimesh's Collada reader
         raise MeshError(f"needs converting, and a Python package is missing ({error}; "
                         "tools/requirements.txt, run make)") from None
     except Exception as error:  # pycollada's and trimesh's errors have no common base
         raise MeshError(f"cannot be read as {'Collada' if kind == 'dae' else 'STL'} "
                         f"({type(error).__name__}: {error})") from None
-    if not isinstance(mesh, trimesh.Trimesh) or len(mesh.faces) == 0:
+    parts = [part for part in scene.dump()
+             if isinstance(part, trimesh.Trimesh) and len(part.faces) > 0]
+    if not parts:
         raise MeshError("has no triangles in it")
-    vertices = np.asarray(mesh.vertices, dtype=float) * meter
-    faces = np.asarray(mesh.faces, dtype=np.int64) + 1
     lines = [f"# {path} in metres, converted by sim_bridge (mesh_files.py)\n"]
-    lines += [f"v {x:.9g} {y:.9g} {z:.9g}\n" for x, y, z in vertices]
-    lines += [f"f {a} {b} {c}\n" for a, b, c in faces]
+    first_vertex = 1  # OBJ's indices count from 1 over the whole file
+    for number, part in enumerate(parts):
+        lines.append(f"o part_{number}\n")
+        vertices = np.asarray(part.vertices, dtype=float) * meter
+        faces = np.asarray(part.faces, dtype=np.int64) + first_vertex
+        lines += [f"v {x:.9g} {y:.9g} {z:.9g}\n" for x, y, z in vertices]
+        lines += [f"f {a} {b} {c}\n" for a, b, c in faces]
+        first_vertex += len(vertices)
     folder = os.path.dirname(target)
     handle, temporary = tempfile.mkstemp(suffix=".obj.part", dir=folder)
     try:

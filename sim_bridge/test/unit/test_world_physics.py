@@ -180,9 +180,12 @@ def test_the_model_library_loads_and_free_models_rest_where_placed(bus, tmp_path
         (px, py, pz), _ = simulated.pose(name)
         assert (px, py) == pytest.approx((x, 0.0), abs=0.01), name
         assert 0.0 <= pz < 0.2, name  # resting on the asphalt, not sunk or thrown
-    # the barrier is solid to lasers: 4 m long across the x axis at y = 0
+    # the barrier is solid to lasers, the model database's size: 1.143 m tall, 4.06542 m
+    # long across the x axis at y = 0 (its top 2.0 - 1.143 m below the ray's start)
     down = np.array([[0.0, 0.0, -1.0]])
-    assert simulated.cast_rays((1.5, 0.0, 2.0), down, 0.0, 5.0)[0] == pytest.approx(1.2, abs=0.01)
+    assert simulated.cast_rays((1.5, 0.0, 2.0), down, 0.0, 5.0)[0] == pytest.approx(0.857, abs=0.01)
+    assert simulated.cast_rays((2.0, 0.0, 2.0), down, 0.0, 5.0)[0] == pytest.approx(0.857, abs=0.01)
+    assert simulated.cast_rays((2.06, 0.0, 2.0), down, 0.0, 5.0)[0] > 1.9  # past its end
     simulated.close()
 
 
