@@ -1,7 +1,10 @@
 """The <gazebo> tag reader: values as text or as attributes, fdir1 as a direction; tags
 Gazebo reads that sim_bridge does not emulate are named, once each."""
+import pybullet as pb
+
 from sim_bridge.gazebo_tags import read_gazebo_tags
 from urdf_tools.model import parse_urdf
+from world_fixtures import run
 
 ROBOT = """<robot name="r">
   <link name="base"><inertial><mass value="1"/>
@@ -65,3 +68,27 @@ def test_preserve_fixed_joint_is_not_reported_as_ignored(world, bus):
                           '</gazebo>')
     world.spawn_urdf("r", robot, (0, 0, 0.5))
     assert not [w for w in bus.warnings if "preserveFixedJoint" in w]
+
+
+HEAVY_CRATE = """<robot name="crate"><link name="base"><inertial><mass value="100"/>
+  <inertia ixx="0.667" ixy="0" ixz="0" iyy="0.667" iyz="0" izz="0.667"/></inertial>
+  <collision><geometry><box size="0.2 0.2 0.2"/></geometry></collision></link>
+  <gazebo reference="base"><kd>100</kd></gazebo></robot>"""
+
+
+def test_kd_without_kp_keeps_sdfs_default_stiffness(world):
+    """A link giving kd alone keeps SDF's kp, 1e12 (sdformat sdf9 66a8c21,
+    sdf/1.6/surface.sdf:188), which pybullet holds: a 100 kg crate rests 10 micrometres
+    deep and still (pybullet's own body state). Before, 1e6 was taken: it sank 0.5 mm and
+    went on rocking at about 1 mm/s."""
+    world.spawn_urdf("crate", HEAVY_CRATE, (0.0, 0.0, 0.15))
+    run(world, 1.0)
+    body = world.models["crate"].robot.id
+    depths, speeds = [], []
+    for _ in range(500):
+        world.step()
+        depths.append(0.1 - pb.getBasePositionAndOrientation(
+            body, physicsClientId=world.client)[0][2])
+        speeds.append(abs(pb.getBaseVelocity(body, physicsClientId=world.client)[0][2]))
+    assert max(depths) < 5e-5
+    assert max(speeds) < 1e-4
