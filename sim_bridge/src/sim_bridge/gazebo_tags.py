@@ -46,7 +46,8 @@ class LinkSurface:
     # Gazebo's first friction direction, in the link's frame (sim_bridge.tyre_friction)
     fdir1: Optional[Tuple[float, float, float]] = None
     material: Optional[str] = None
-    self_collide: bool = False
+    # <selfCollide> as given (None: not given, the model's <self_collide> decides)
+    self_collide: Optional[bool] = None
     gravity: bool = True
 
 

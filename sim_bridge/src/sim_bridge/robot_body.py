@@ -47,13 +47,14 @@ import os
 import tempfile
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass
-from typing import Dict, List, Mapping, Optional, Sequence, Tuple
+from typing import Dict, List, Mapping, Optional, Sequence, Set, Tuple
 
 import numpy as np
 import pybullet as pb
 
 from sim_bridge.gazebo_tags import GazeboTags, LinkSurface
 from sim_bridge.materials import gazebo_colour
+from sim_bridge.model_structure import urdf_structure
 from sim_bridge.mesh_files import MeshError, bounds, collision_fallback, loadable_file
 from sim_bridge.tyre_friction import Tyre
 from urdf_tools.kinematics import rpy_matrix
@@ -307,6 +308,25 @@ DEFAULT_KP = 1e12
 DEFAULT_KD = 1.0
 
 
+def self_colliding_bodies(model: RobotModel, tags: GazeboTags) -> Set[str]:
+    """Gazebo's links (after lumping) whose self_collide is true (sdformat sdf9 66a8c21,
+    src/parser_urdf.cc). Each takes its own <selfCollide> (read at :1397-1412, written
+    into the link at :2092-2096; a lumped link's goes to the link it is lumped into, the
+    link's own first), else the model's: a robot-level <self_collide> is copied into the
+    model (:2279-2287; sdf/1.6/model.sdf:13-15). A robot-level <selfCollide> is read into no
+    link and written nowhere: no effect, as in Gazebo. Two of them collide when either is
+    in the set (sdf/1.6/link.sdf:17-19)."""
+    structure = urdf_structure(model)
+    colliding = set()
+    for body in structure.bodies:
+        # the link itself first, then those lumped into it
+        given = [tags.surfaces[link].self_collide for link in structure.links_of(body)
+                 if link in tags.surfaces and tags.surfaces[link].self_collide is not None]
+        if (given[0] if given else tags.self_collide):
+            colliding.add(body)
+    return colliding
+
+
 class RobotBody:
     """A loaded URDF robot: link and joint access by name, in link frames."""
 
@@ -316,7 +336,9 @@ class RobotBody:
         self.model = model
         prepared = prepare_urdf(xml, model, tags, warn)
         flags = pb.URDF_USE_INERTIA_FROM_FILE | pb.URDF_USE_IMPLICIT_CYLINDER
-        if tags.self_collide or any(s.self_collide for s in tags.surfaces.values()):
+        colliding = self_colliding_bodies(model, tags)
+        if colliding:
+            # parent and child never collide (a joint, or a fixed joint Gazebo lumps)
             flags |= pb.URDF_USE_SELF_COLLISION | pb.URDF_USE_SELF_COLLISION_EXCLUDE_PARENT
         if len(model.joints) > MAX_PYBULLET_JOINTS:  # it would hand back an unbuilt body
             raise UrdfError(f"{model.source}: pybullet could not build it: it has "
@@ -351,12 +373,35 @@ class RobotBody:
         # root link frame expressed in the base's centre-of-mass frame
         self._com_to_link = pb.invertTransform(inertial[3], inertial[4])
         self.weightless_links: List[Tuple[int, float]] = []
+        if colliding:
+            self._filter_self_collisions(colliding)
         self._apply_joint_settings()
         self._apply_surfaces(tags, warn)
         # their friction is sim_bridge.tyre_friction's, which the world applies each step
         self.tyres = tyres(model, tags, self.link_index)
 
     # --- set-up ---------------------------------------------------------------------
+    def _filter_self_collisions(self, colliding: Set[str]) -> None:
+        """Switches off the pairs of pybullet links that Gazebo does not let collide:
+        parts of one Gazebo link (lumped), links a joint connects, and two links neither
+        of which is in ``colliding``."""
+        structure = urdf_structure(self.model)
+        joined = set()
+        for name in structure.joints:
+            joint = self.model.joints[name]
+            if joint.parent in structure.body_of:
+                joined.add(frozenset((structure.body_of[joint.parent],
+                                      structure.body_of[joint.child])))
+        links = [(structure.body_of[link], index) for link, index in self.link_index.items()
+                 if link in structure.body_of]
+        for position, (body_a, index_a) in enumerate(links):
+            for body_b, index_b in links[position + 1:]:
+                allowed = (body_a != body_b and frozenset((body_a, body_b)) not in joined
+                           and (body_a in colliding or body_b in colliding))
+                if not allowed:
+                    pb.setCollisionFilterPair(self.id, self.id, index_a, index_b, 0,
+                                              physicsClientId=self.client)
+
     def _apply_joint_settings(self) -> None:
         for name, index in self.joint_index.items():
             joint = self.model.joints.get(name)

@@ -1,6 +1,7 @@
 """The <gazebo> tag reader: values as text or as attributes, fdir1 as a direction; tags
 Gazebo reads that sim_bridge does not emulate are named, once each."""
 import pybullet as pb
+import pytest
 
 from sim_bridge.gazebo_tags import read_gazebo_tags
 from urdf_tools.model import parse_urdf
@@ -92,3 +93,79 @@ def test_kd_without_kp_keeps_sdfs_default_stiffness(world):
         speeds.append(abs(pb.getBaseVelocity(body, physicsClientId=world.client)[0][2]))
     assert max(depths) < 5e-5
     assert max(speeds) < 1e-4
+
+
+def _box_link(name, size, mass=0.1):
+    return (f'<link name="{name}"><inertial><mass value="{mass}"/><inertia ixx="1e-4" '
+            f'ixy="0" ixz="0" iyy="1e-4" iyz="0" izz="1e-4"/></inertial><collision><geometry>'
+            f'<box size="{size}"/></geometry></collision></link>')
+
+
+def _gripper(blocks):
+    """Two fingers on prismatic joints sliding towards each other on a base fixed to the
+    world, a mast on a revolute joint, and a plate lumped into the base (fixed joint) where
+    the fingers pass over it. ``blocks``: the robot's <gazebo> blocks."""
+    finger = '<limit lower="-0.3" upper="0.3" effort="100" velocity="10"/>'
+    return f"""<robot name="gripper"><link name="world"/>
+      {_box_link("base", "0.6 0.1 0.02", 1.0)}
+      <joint name="fix" type="fixed"><parent link="world"/><child link="base"/>
+        <origin xyz="0 0 0.5"/></joint>
+      {_box_link("plate", "0.3 0.06 0.02")}
+      <joint name="plate_joint" type="fixed"><parent link="base"/><child link="plate"/>
+        <origin xyz="0 0 0.04"/></joint>
+      {_box_link("left", "0.02 0.04 0.04")}
+      <joint name="left_joint" type="prismatic"><parent link="base"/><child link="left"/>
+        <origin xyz="-0.1 0 0.04"/><axis xyz="1 0 0"/>{finger}</joint>
+      {_box_link("right", "0.02 0.04 0.04")}
+      <joint name="right_joint" type="prismatic"><parent link="base"/><child link="right"/>
+        <origin xyz="0.1 0 0.04"/><axis xyz="1 0 0"/>{finger}</joint>
+      {_box_link("mast", "0.02 0.02 0.2")}
+      <joint name="mast_joint" type="revolute"><parent link="base"/><child link="mast"/>
+        <origin xyz="0.25 0 0.12"/><axis xyz="0 0 1"/>{finger}</joint>
+      {blocks}</robot>"""
+
+
+def _squeeze(world, blocks):
+    """Pushes the fingers towards each other for 1 s: their distance apart (m, centre to
+    centre) as pybullet's joints say."""
+    world.spawn_urdf("gripper", _gripper(blocks), (0.0, 0.0, 0.0))
+    world.apply_joint_effort("gripper::left_joint", 2.0)
+    world.apply_joint_effort("gripper::right_joint", -2.0)
+    run(world, 1.0)
+    robot = world.models["gripper"].robot
+    left = pb.getJointState(robot.id, robot.joint_index["left_joint"],
+                            physicsClientId=world.client)[0]
+    right = pb.getJointState(robot.id, robot.joint_index["right_joint"],
+                             physicsClientId=world.client)[0]
+    return (0.1 + right) - (-0.1 + left)
+
+
+FINGER_WIDTH = 0.02
+
+
+@pytest.mark.parametrize("blocks, collide", [
+    ("", False),
+    ('<gazebo reference="left"><selfCollide>true</selfCollide></gazebo>', True),
+    ('<gazebo reference="mast"><selfCollide>true</selfCollide></gazebo>', False),
+    ("<gazebo><self_collide>true</self_collide></gazebo>", True),
+    ("<gazebo><self_collide>true</self_collide></gazebo>"
+     '<gazebo reference="left"><selfCollide>false</selfCollide></gazebo>'
+     '<gazebo reference="right"><selfCollide>false</selfCollide></gazebo>', False),
+    ("<gazebo><selfCollide>true</selfCollide></gazebo>", False),
+])
+def test_two_links_collide_when_either_sets_self_collide(world, blocks, collide):
+    """sdformat sdf9 66a8c21 sdf/1.6/link.sdf:17-19: two links of a model collide if either
+    sets self_collide, never when a joint connects them; a model's self_collide
+    (model.sdf:13-15) is every link's unless the link says otherwise. Gazebo's URDF
+    conversion writes a link's <selfCollide> as its self_collide (parser_urdf.cc:1397-1412,
+    :2092-2096) and copies a robot-level <self_collide> into the model (:2279-2287); a
+    robot-level <selfCollide> is read and written nowhere (:2257-2290). The fingers stop
+    against each other (pybullet's joints) exactly when that rule says so; they never
+    touch the plate lumped into the base they slide on, nor the base. Before, any link's
+    selfCollide made every pair collide (the mast's made the fingers collide), and a
+    robot-level <selfCollide> too."""
+    apart = _squeeze(world, blocks)
+    if collide:
+        assert apart == pytest.approx(FINGER_WIDTH, abs=2e-3)
+    else:
+        assert apart < 0.0  # passed through each other
