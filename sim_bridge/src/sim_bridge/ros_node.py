@@ -8,7 +8,9 @@ The node is named ``gazebo`` by the launch files, so its services are gazebo_ros
 ``clear_body_wrenches``, ``apply_joint_effort``, ``clear_joint_forces``,
 ``pause_physics``, ``unpause_physics``, ``reset_simulation``, ``reset_world``; topics
 ``/clock``, ``/gazebo/model_states`` and ``/gazebo/link_states`` (the two published at
-``~model_states_frequency``, and only while someone listens).
+``~model_states_frequency``, and only while someone listens); it subscribes
+``/gazebo/set_model_state`` and ``/gazebo/set_link_state``, the services' requests as
+messages, unanswered.
 
 A request that cannot be done answers ``success: false`` with a ``status_message`` naming
 the cause (``<Service>: ...``), and the node goes on; ``clear_body_wrenches`` and
@@ -41,7 +43,7 @@ from geometry_msgs.msg import Pose, Twist
 from std_srvs.srv import Empty, EmptyResponse
 from tf2_msgs.msg import TFMessage
 
-from gazebo_msgs.msg import LinkStates, ModelStates
+from gazebo_msgs.msg import LinkState, LinkStates, ModelState, ModelStates
 from sim_bridge import one_simulator
 from sim_bridge.plugins.base import Bus, PluginError
 from sim_bridge.poses import quaternion_matrix
@@ -69,6 +71,9 @@ REQUEST_TIMEOUT = 30.0
 THREAD_SWITCH_INTERVAL = 0.0005
 # gzserver's exit status when its port is taken by another Gazebo
 ALREADY_RUNNING_STATUS = 255
+# gazebo_ros's queue for the set_model_state and set_link_state topics' messages
+# (gazebo_ros_api_plugin.cpp:478, :486)
+STATE_TOPIC_QUEUE = 10
 # What a request gets once the simulator has been told to stop.
 STOPPING = "the simulator is shutting down"
 # While paused, /clock is repeated this often (wall seconds) for late subscribers.
@@ -351,6 +356,13 @@ class SimBridgeNode:
         ]
         self.services = [rospy.Service("~" + name, kind, self._guarded(handler, kind))
                          for name, kind, handler in services]
+        # the services' topic forms: every message is a request with no answer, ten queued
+        # as gazebo_ros subscribes them (gazebo_ros_api_plugin.cpp:474-490)
+        self.state_topics = [
+            rospy.Subscriber("~set_link_state", LinkState, self.on_set_link_state,
+                             queue_size=STATE_TOPIC_QUEUE),
+            rospy.Subscriber("~set_model_state", ModelState, self.on_set_model_state,
+                             queue_size=STATE_TOPIC_QUEUE)]
 
     # --- requests: run in the physics thread ---------------------------------------------
     def _guarded(self, handler, kind):
@@ -372,6 +384,31 @@ class SimBridgeNode:
                     return response
                 raise rospy.ServiceException(f"{service}: {error}")
         return serve
+
+    def _posted(self, handler, kind, request) -> None:
+        """Hands ``request`` to ``handler`` in the physics thread without waiting: a topic's
+        message has no one to answer, so a request that cannot be done is logged, as
+        gazebo_ros's setModelState and setLinkState log it."""
+        service = kind._type.split('/')[-1]
+
+        def work():
+            try:
+                handler(request)
+            except (SimError, ValueError) as error:
+                rospy.logerr(f"{service}: {error}")
+        self.physics.post(work)
+
+    def on_set_model_state(self, message) -> None:
+        """``~set_model_state`` (gazebo_msgs/ModelState): set_model_state's request, no
+        answer (updateModelState, gazebo_ros_api_plugin.cpp:1663-1669)."""
+        self._posted(self._set_state, SetModelState,
+                     SetModelState._request_class(model_state=message))
+
+    def on_set_link_state(self, message) -> None:
+        """``~set_link_state`` (gazebo_msgs/LinkState): set_link_state's request, no answer
+        (updateLinkState, gazebo_ros_api_plugin.cpp:1918-1924)."""
+        self._posted(self._set_link_state, SetLinkState,
+                     SetLinkState._request_class(link_state=message))
 
     def _spawn(self, request, kind: str):
         position, orientation, _, _ = self.world.state_in_world(

@@ -10,7 +10,7 @@ import pytest
 from geometry_msgs.msg import Pose
 from std_srvs.srv import Empty, EmptyRequest
 
-from gazebo_msgs.msg import ModelState
+from gazebo_msgs.msg import LinkState, ModelState
 from gazebo_msgs.srv import (ApplyBodyWrench, ApplyBodyWrenchRequest, BodyRequest,
                              BodyRequestRequest, DeleteModel, DeleteModelRequest,
                              GetModelProperties, GetModelPropertiesRequest, GetModelState,
@@ -34,6 +34,10 @@ class Inline:
     @staticmethod
     def call(work):
         return work()
+
+    @staticmethod
+    def post(work):
+        work()
 
 
 @pytest.fixture
@@ -240,3 +244,27 @@ def test_an_included_models_own_pose_gives_way_to_the_spawn_pose(node, tmp_path,
     b, _ = pb.getBasePositionAndOrientation(node.world.models["b"].body, physicsClientId=client)
     assert a == pytest.approx((2.0, 0.0, 0.0), abs=1e-6)
     assert b == pytest.approx((-2.0, 0.0, 0.3), abs=1e-6)
+
+
+def test_the_state_topics_set_as_the_services_do_and_answer_nothing(node):
+    """~set_model_state and ~set_link_state (:474-490) hand each message to setModelState
+    and setLinkState and drop the answer (:1663-1669, :1918-1924): the box moves where the
+    message says (pybullet's body), and a message naming no model is logged, not raised,
+    and changes nothing (before: no such topics)."""
+    spawn(node, "a")
+    body = node.world.models["a"].body
+    client = node.world.client
+    state = ModelState(model_name="a")
+    state.pose.position.x, state.pose.position.z = 1.5, 0.1
+    node.on_set_model_state(state)
+    position, _ = pb.getBasePositionAndOrientation(body, physicsClientId=client)
+    assert position == pytest.approx((1.5, 0.0, 0.1), abs=1e-6)
+    link = LinkState(link_name="a::base", reference_frame="a")
+    link.pose.position.y, link.pose.orientation.w = 0.5, 1.0
+    node.on_set_link_state(link)
+    position, _ = pb.getBasePositionAndOrientation(body, physicsClientId=client)
+    assert position == pytest.approx((1.5, 0.5, 0.1), abs=1e-6)
+    node.on_set_model_state(ModelState(model_name="ghost"))
+    node.on_set_link_state(LinkState(link_name="ghost::base"))
+    position, _ = pb.getBasePositionAndOrientation(body, physicsClientId=client)
+    assert position == pytest.approx((1.5, 0.5, 0.1), abs=1e-6)

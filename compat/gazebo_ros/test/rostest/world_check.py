@@ -100,6 +100,22 @@ class World(unittest.TestCase):
         self.assertLess(math.hypot(after[0], after[1]), 0.01)
         self.assertGreaterEqual(self.sim.sim_time(), before_reset)  # time never goes back
 
+    def test_the_set_model_state_topic_moves_the_model(self):
+        """/gazebo/set_model_state takes set_model_state's request as a message
+        (gazebo_ros_api_plugin.cpp:483-489, :1663-1669)."""
+        self.sim.pause()
+        topic = rospy.Publisher("/gazebo/set_model_state", ModelState, queue_size=10)
+        state = ModelState(model_name="diff_bot", pose=pose(-0.4, 0.6, -0.5))
+        wait_until(lambda: topic.get_num_connections() > 0, "the simulator's subscription")
+        topic.publish(state)
+        wait_until(lambda: abs(self.sim.truth("diff_bot")[0] + 0.4) < 1e-6,
+                   "the model where the message put it")
+        x, y, yaw = self.sim.truth("diff_bot")
+        self.assertAlmostEqual(y, 0.6, delta=1e-6)
+        self.assertAlmostEqual(yaw, -0.5, delta=1e-6)
+        topic.unregister()
+        self.sim.unpause()
+
     def test_a_position_beyond_floats_is_refused_naming_the_value_sent(self):
         """pybullet turns 1e300 into (inf, nan, nan): the answer names what was sent, the
         model stays where it was, and the next request is served."""
