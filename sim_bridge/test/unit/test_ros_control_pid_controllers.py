@@ -228,3 +228,39 @@ def test_joint_controller_state_has_control_msgs_layout():
     """compat's control_msgs/JointControllerState is control_msgs 1.5's: the md5sum of
     ros-controls/control_msgs control_msgs/msg/JointControllerState.msg (commit 0e5fd15)."""
     assert JointControllerState._md5sum == "987ad85e4756f3aef7f1e5e7fe0595d1"
+
+
+VELOCITY_POSITION = "velocity_controllers/JointPositionController"
+
+
+def test_the_velocity_position_controller_brings_a_velocity_joint_to_its_command():
+    """velocity_controllers/JointPositionController (RC velocity_controllers/
+    velocity_controllers_plugins.xml:9; vpc): the PID's output is the joint's velocity
+    command (vpc:209-218), p 5: a first-order approach, within 1e-3 rad after 3 s; the
+    command clamped to the URDF limits (vpc:254-268) and the state published (vpc:221-245).
+    Before: the type was not emulated and the controller did not load."""
+    world, bus, model = spinner(VELOCITY_POSITION, interface="velocity", gains=VELOCITY_GAINS)
+    command(bus, 0.8)
+    run(world, 0.2)  # one time constant (1/p): 63% of the way
+    assert spin(model)[0] == pytest.approx(0.8 * (1 - math.exp(-1)), abs=0.01)
+    run(world, 2.8)
+    assert spin(model) == pytest.approx((0.8, 0.0), abs=1e-3)
+    command(bus, 3.0)
+    run(world, 3.0)
+    assert spin(model)[0] == pytest.approx(1.0, abs=1e-3)
+    state = bus.last("/spinner/controller/state")
+    assert state.set_point == 1.0
+    assert state.command == pytest.approx(5.0 * state.error)
+    world.close()
+
+
+def test_the_velocity_position_controller_needs_a_velocity_joint():
+    """It claims a VelocityJointInterface (vpc:58): on an effort joint it does not load."""
+    bus = RecordingBus({"/spinner/controller": {"type": VELOCITY_POSITION, "joint": "spin",
+                                                "pid": VELOCITY_GAINS}})
+    world = World(bus, ray_threads=1)
+    world.spawn_urdf("spinner", spinner_urdf(
+        "effort", "revolute", '<limit lower="-1" upper="1" effort="50" velocity="10"/>'))
+    assert not bus.services[f"{MANAGER}/load_controller"](LoadControllerRequest("controller")).ok
+    assert any("VelocityJointInterface" in w for w in bus.warnings), bus.warnings
+    world.close()

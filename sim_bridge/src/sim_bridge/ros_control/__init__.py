@@ -35,7 +35,8 @@ from sim_bridge.ros_control.joint_controllers import (EffortController, EffortPo
                                                       GroupEffortPositionController,
                                                       GroupPositionController,
                                                       GroupVelocityController,
-                                                      PositionController, VelocityController)
+                                                      PositionController, VelocityController,
+                                                      VelocityPositionController)
 from sim_bridge.ros_control.joint_state_controller import JointStateController
 from sim_bridge.ros_control.trajectory_controller import (EffortTrajectoryController,
                                                           PositionTrajectoryController,
@@ -48,6 +49,7 @@ CONTROLLER_TYPES = {
     "effort_controllers/JointTrajectoryController": EffortTrajectoryController,
     "position_controllers/JointPositionController": PositionController,
     "velocity_controllers/JointVelocityController": VelocityController,
+    "velocity_controllers/JointPositionController": VelocityPositionController,
     "effort_controllers/JointEffortController": EffortController,
     "effort_controllers/JointPositionController": EffortPositionController,
     "effort_controllers/JointVelocityController": EffortVelocityController,
