@@ -8,7 +8,9 @@ The node is named ``gazebo`` by the launch files, so its services are gazebo_ros
 ``clear_body_wrenches``, ``apply_joint_effort``, ``clear_joint_forces``,
 ``pause_physics``, ``unpause_physics``, ``reset_simulation``, ``reset_world``; topics
 ``/clock``, ``/gazebo/model_states`` and ``/gazebo/link_states`` (the two published at
-``~model_states_frequency``, and only while someone listens); it subscribes
+``~model_states_frequency``, and only while someone listens), ``/gazebo/performance_metrics``
+(the real time factor and the sensors' rates, once a wall second while someone listens);
+it subscribes
 ``/gazebo/set_model_state`` and ``/gazebo/set_link_state``, the services' requests as
 messages, unanswered.
 
@@ -43,7 +45,8 @@ from geometry_msgs.msg import Pose, Twist
 from std_srvs.srv import Empty, EmptyResponse
 from tf2_msgs.msg import TFMessage
 
-from gazebo_msgs.msg import LinkState, LinkStates, ModelState, ModelStates
+from gazebo_msgs.msg import (LinkState, LinkStates, ModelState, ModelStates, PerformanceMetrics,
+                             SensorPerformanceMetric)
 from sim_bridge import one_simulator
 from sim_bridge.plugins.base import Bus, PluginError
 from sim_bridge.poses import quaternion_matrix
@@ -74,6 +77,17 @@ ALREADY_RUNNING_STATUS = 255
 # gazebo_ros's queue for the set_model_state and set_link_state topics' messages
 # (gazebo_ros_api_plugin.cpp:478, :486)
 STATE_TOPIC_QUEUE = 10
+# ~performance_metrics: how often it is published (wall seconds), each message measuring
+# the real time factor over that span. Gazebo 11 sends its own (which gazebo_ros relays,
+# gazebo_ros_api_plugin.cpp:230-253) from gazebo-classic's world, not read here: its
+# period is unverified.
+PERFORMANCE_PERIOD = 1.0
+# its queue, gazebo_ros's (:413)
+PERFORMANCE_QUEUE = 10
+# sensor types that render frames: their metric carries an fps (gazebo_ros: -1 otherwise,
+# :242-249)
+CAMERA_TYPES = frozenset(("camera", "depth", "multicamera", "wideanglecamera"))
+NO_FPS = -1.0
 # What a request gets once the simulator has been told to stop.
 STOPPING = "the simulator is shutting down"
 # While paused, /clock is repeated this often (wall seconds) for late subscribers.
@@ -304,6 +318,42 @@ def _relative(position, orientation, linear, angular, frame):
             rotation @ (np.asarray(angular) - frame_angular))
 
 
+class PerformanceMeter:
+    """gazebo_ros's ``~performance_metrics`` (gazebo_ros_api_plugin.cpp:410-417,
+    :230-253): the real time factor measured over the last ``period`` wall seconds
+    (simulated time gone by over wall time gone by), and each sensor's update rate in
+    simulated time (its ``<update_rate>``, or every step) and in wall time (that times the
+    real time factor); a camera's fps is its wall rate, other sensors' -1."""
+
+    def __init__(self, period: float = PERFORMANCE_PERIOD):
+        self.period = period
+        self._anchor: Optional[Tuple[float, int]] = None
+
+    def restart(self) -> None:
+        """The next measurement starts at the next sample (no one listened meanwhile)."""
+        self._anchor = None
+
+    def sample(self, world: World, wall: float) -> Optional[PerformanceMetrics]:
+        """A message once ``period`` wall seconds have gone by since the last one (or
+        since the first sample), else None."""
+        if self._anchor is None:
+            self._anchor = (wall, world.now_ns)
+            return None
+        anchor_wall, anchor_ns = self._anchor
+        if wall - anchor_wall < self.period:
+            return None
+        factor = (world.now_ns - anchor_ns) / 1e9 / (wall - anchor_wall)
+        self._anchor = (wall, world.now_ns)
+        message = PerformanceMetrics(real_time_factor=factor)
+        message.header.stamp = rospy.Time(nsecs=world.now_ns)
+        for sensor in world.sensors():
+            real_rate = sensor.rate * factor
+            message.sensors.append(SensorPerformanceMetric(
+                name=sensor.name, sim_update_rate=sensor.rate, real_update_rate=real_rate,
+                fps=real_rate if sensor.type in CAMERA_TYPES else NO_FPS))
+        return message
+
+
 class SimBridgeNode:
     """gazebo_ros's interface over a World; ``run()`` is the physics loop."""
 
@@ -320,6 +370,8 @@ class SimBridgeNode:
         self._pace_anchor = None
         self.model_states = None
         self.link_states = None
+        self.performance_metrics = None
+        self.performance = PerformanceMeter()
         self.clock: Optional[ClockPublisher] = None
         self._static_version = -1  # the world's scene_version the entries below are of
         self._static_entries: Dict[str, Tuple[Pose, Twist]] = {}
@@ -332,6 +384,8 @@ class SimBridgeNode:
         self.advertise_clock()
         self.model_states = rospy.Publisher("~model_states", ModelStates, queue_size=1)
         self.link_states = rospy.Publisher("~link_states", LinkStates, queue_size=1)
+        self.performance_metrics = rospy.Publisher("~performance_metrics", PerformanceMetrics,
+                                                   queue_size=PERFORMANCE_QUEUE)
         services = [
             ("spawn_urdf_model", SpawnModel, self._spawn_urdf),
             ("spawn_sdf_model", SpawnModel, self._spawn_sdf),
@@ -625,6 +679,17 @@ class SimBridgeNode:
     def _publish_link_states(self) -> None:
         self.link_states.publish(self._states_message(LinkStates, self.world.link_states()))
 
+    def _publish_performance(self) -> None:
+        """As gazebo_ros: only while someone listens (:579-598)."""
+        if self.performance_metrics is None:
+            return
+        if self.performance_metrics.get_num_connections() == 0:
+            self.performance.restart()
+            return
+        message = self.performance.sample(self.world, time.monotonic())
+        if message is not None:
+            self.performance_metrics.publish(message)
+
     def _pace(self) -> None:
         """Sleeps so that simulated time runs at real_time_factor times the wall clock."""
         factor = self.world.real_time_factor
@@ -655,6 +720,7 @@ class SimBridgeNode:
                 if now - last_paused_clock > PAUSED_CLOCK_PERIOD:
                     self._publish_clock()
                     last_paused_clock = now
+                self._publish_performance()
                 self.clock.flush()
                 time.sleep(0.002)
                 continue
@@ -670,6 +736,7 @@ class SimBridgeNode:
                 if self.link_states and self.link_states.get_num_connections() > 0:
                     self._publish_link_states()
                 self._next_states_ns = now_ns + self.states_period_ns
+            self._publish_performance()
             self._pace()
 
 

@@ -155,6 +155,16 @@ class ModelProperties:
 
 
 @dataclass(frozen=True)
+class SensorRate:
+    """A sensor as performance_metrics names it (``model::link::sensor``, the link
+    Gazebo's, after lumping), its type and its update rate in Hz of simulated time."""
+
+    name: str
+    type: str
+    rate: float
+
+
+@dataclass(frozen=True)
 class PhysicsProperties:
     """gazebo_msgs/GetPhysicsProperties' answer; ``ode`` holds ODEPhysics' fields."""
 
@@ -858,6 +868,26 @@ class World:
         structure = model.structure
         return ModelProperties("", structure.canonical, structure.bodies, structure.geoms,
                                structure.joints, (), model.kind == "static")
+
+    def sensors(self) -> List[SensorRate]:
+        """Every robot's sensors with the rate they update at in simulated time: their
+        ``<update_rate>`` (Hz), or every step when it is 0, absent or unreadable (Gazebo's
+        sensors update at every world update then)."""
+        found = []
+        for model in self.models.values():
+            if model.tags is None:
+                continue
+            for sensor in model.tags.sensors:
+                try:
+                    rate = float((sensor.element.findtext("update_rate") or "0").strip())
+                except ValueError:
+                    rate = 0.0
+                if not math.isfinite(rate) or rate <= 0:
+                    rate = 1.0 / self.step_size
+                link = model.structure.body_of.get(sensor.link, sensor.link)
+                found.append(SensorRate(f"{model.name}::{link}::{sensor.name}", sensor.type,
+                                        rate))
+        return found
 
     def find_joint(self, name: str) -> Tuple[Model, str]:
         """A joint by ``model::joint`` or its plain name (the first model's), among the

@@ -16,7 +16,7 @@ from geometry_msgs.msg import Point, Pose, Vector3, Wrench
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sim_checks import Simulator, wait_until  # noqa: E402
 
-from gazebo_msgs.msg import LinkState, LinkStates  # noqa: E402
+from gazebo_msgs.msg import LinkState, LinkStates, PerformanceMetrics  # noqa: E402
 from gazebo_msgs.srv import (ApplyBodyWrench, ApplyJointEffort, BodyRequest,  # noqa: E402
                              DeleteModel, GetLinkState, GetModelProperties,
                              GetPhysicsProperties, JointRequest, SetLinkState,
@@ -244,6 +244,25 @@ class LinkAndPhysics(unittest.TestCase):
         # 250 steps of 1 ms per second: a quarter of real time (a busy machine: less)
         self.assertGreater(sim_rate, 0.0)
         self.assertLess(sim_rate, 0.35)
+
+    def test_performance_metrics_measure_the_real_time_factor(self):
+        """/gazebo/performance_metrics (gazebo_ros_api_plugin.cpp:410-417, :230-253) while
+        someone listens: the real time factor against what this node measures of /clock
+        over wall time, and the laser at its <update_rate> 20 on the link it is lumped
+        into."""
+        received = []
+        subscriber = rospy.Subscriber("/gazebo/performance_metrics", PerformanceMetrics,
+                                      received.append)
+        self.addCleanup(subscriber.unregister)
+        start_sim, start_wall = self.sim.sim_time(), time.monotonic()
+        wait_until(lambda: len(received) >= 2, "two messages on /gazebo/performance_metrics")
+        measured = (self.sim.sim_time() - start_sim) / (time.monotonic() - start_wall)
+        latest = received[-1]
+        self.assertAlmostEqual(latest.real_time_factor, measured, delta=0.25)
+        laser = [s for s in latest.sensors if s.name == "diff_bot::base_footprint::laser_sensor"]
+        self.assertEqual(len(laser), 1, [s.name for s in latest.sensors])
+        self.assertEqual(laser[0].sim_update_rate, 20.0)
+        self.assertEqual(laser[0].fps, -1.0)
 
     # --- bad requests -----------------------------------------------------------------
     def assert_refused(self, answer, *words):
