@@ -12,8 +12,10 @@ which only Kinetic's plugin read, is a verbose note: sim_bridge.plugins.RETIRED_
 Joints are the ones with a ``<transmission>`` (see :mod:`.hardware`). Controllers are
 configured on the parameter server, under ``<namespace>/<name>`` with a ``type``, and loaded,
 started, stopped and unloaded through controller_manager's services under
-``<namespace>/controller_manager/`` — what ``rosrun controller_manager spawner`` calls.
-Types: see ``CONTROLLER_TYPES``.
+``<namespace>/controller_manager/`` — what ``rosrun controller_manager spawner`` calls — which
+also lists the types (``list_controller_types``) and reloads the libraries
+(``reload_controller_libraries``: nothing to reload, but refused while controllers are loaded,
+as controller_manager.cpp:642-692). Types: see ``CONTROLLER_TYPES``.
 """
 from __future__ import annotations
 
@@ -21,8 +23,11 @@ from dataclasses import dataclass
 from typing import Dict
 
 from controller_manager_msgs.msg import ControllerState, HardwareInterfaceResources
-from controller_manager_msgs.srv import (ListControllers, ListControllersResponse, LoadController,
-                                         LoadControllerResponse, SwitchController,
+from controller_manager_msgs.srv import (ListControllers, ListControllersResponse,
+                                         ListControllerTypes, ListControllerTypesResponse,
+                                         LoadController, LoadControllerResponse,
+                                         ReloadControllerLibraries,
+                                         ReloadControllerLibrariesResponse, SwitchController,
                                          SwitchControllerResponse, UnloadController,
                                          UnloadControllerResponse)
 
@@ -79,6 +84,11 @@ class ControllerIO:
         return resolve_topic(self.namespace, f"{controller}/{key}")
 
 
+# the one controller loader's base class: list_controller_types names it beside each type
+# (ros_control noetic-devel 633c374 controller_manager/src/controller_manager.cpp:51-53,
+# :707-715)
+CONTROLLER_BASE_CLASS = "controller_interface::ControllerBase"
+
 # gazebo_ros_control's own RobotHWSim, the one every robot file names
 DEFAULT_SIM_TYPE = "gazebo_ros_control/DefaultRobotHWSim"
 
@@ -125,6 +135,9 @@ class RosControl(Plugin):
             bus.service(f"{base}/unload_controller", UnloadController, self._unload),
             bus.service(f"{base}/switch_controller", SwitchController, self._switch),
             bus.service(f"{base}/list_controllers", ListControllers, self._list),
+            bus.service(f"{base}/list_controller_types", ListControllerTypes, self._list_types),
+            bus.service(f"{base}/reload_controller_libraries", ReloadControllerLibraries,
+                        self._reload_libraries),
         ]
 
     # --- controller_manager's services (run in the physics thread) ----------------------
@@ -207,6 +220,30 @@ class RosControl(Plugin):
                        if controller.interface else [])
             states.append(ControllerState(name, loaded.state, loaded.type, claimed))
         return ListControllersResponse(states)
+
+    def _list_types(self, _request) -> ListControllerTypesResponse:
+        """listControllerTypesSrv (CM:695-719): every type the loader declares (pluginlib's
+        declared classes, by name), each with the loader's base class."""
+        types = sorted(CONTROLLER_TYPES)
+        return ListControllerTypesResponse(types, [CONTROLLER_BASE_CLASS] * len(types))
+
+    def _reload_libraries(self, request) -> ReloadControllerLibrariesResponse:
+        """reloadControllerLibrariesSrv (CM:642-692): refused while any controller is loaded,
+        unless ``force_kill``, which stops and unloads them all first. The types are Python
+        classes here: nothing else to reload."""
+        if self.controllers and not request.force_kill:
+            self.context.bus.warn(f"controller_manager: Cannot reload controller libraries "
+                                  f"because there are still {len(self.controllers)} controllers "
+                                  "running")
+            return ReloadControllerLibrariesResponse(False)
+        if self.controllers:
+            self.context.bus.info("controller_manager: Killing all running controllers")
+            for name, loaded in list(self.controllers.items()):
+                if loaded.state == "running":
+                    loaded.controller.stop(self.now_ns)
+                loaded.controller.close()
+                del self.controllers[name]
+        return ReloadControllerLibrariesResponse(True)
 
     # --- the step ---------------------------------------------------------------------------
     def before_step(self, now_ns: int) -> None:
