@@ -103,3 +103,31 @@ def test_reset_world_keeps_the_last_command(world, bus):
     assert wheel_speeds(world) == pytest.approx([0.4 / 0.08] * 4, rel=0.02)
     (x, _, _), _ = world.pose("skid")
     assert x > 0.1
+
+
+def test_a_command_just_after_an_update_reaches_the_wheels_one_period_later(world, bus):
+    """gazebo_plugins/src/gazebo_ros_skid_steer_drive.cpp:350-352, :363-382: the wheels get
+    the last command only in UpdateChild's rate branch (updateRate 100 Hz: every 10 steps of
+    1 ms). A stop given just after a slot's step keeps the wheels turning for the rest of the
+    period. Before: it reached them at the very next step."""
+    world.spawn_urdf("skid", skid_bot(), (0, 0, 0.1))
+    run(world, 0.3)
+    period_steps = 10
+    target = 0.4 / 0.08
+    message = Twist()
+    message.linear.x = 0.4
+    bus.subscriptions["/cmd_vel"](message)
+    for first in range(1, period_steps + 2):
+        world.step()
+        if wheel_speeds(world)[0] > 0.5 * target:
+            break
+    assert first <= period_steps
+    run(world, 20 * period_steps * world.step_size)  # settled, just after a slot
+    assert wheel_speeds(world) == pytest.approx([target] * 4, rel=0.02)
+    bus.subscriptions["/cmd_vel"](Twist())
+    speeds = []
+    for _ in range(period_steps):
+        world.step()
+        speeds.append(wheel_speeds(world)[0])
+    assert speeds[:-1] == pytest.approx([target] * (period_steps - 1), rel=0.02)
+    assert speeds[-1] < 0.5 * target

@@ -384,3 +384,35 @@ class Throttle:
 
     def mark(self, now_ns: int) -> None:
         self.last_ns = now_ns
+
+
+class UpdateSlots:
+    """The rate branch of gazebo_plugins' drive plugins' UpdateChild, where they read the
+    last cmd_vel and set the wheels (gazebo_ros_pkgs noetic-devel f9e1a46,
+    gazebo_plugins/src/gazebo_ros_diff_drive.cpp:269-271, :307;
+    gazebo_ros_skid_steer_drive.cpp:350-352, :382): it runs once more than the period
+    (``common::Time::Double()``) has passed since ``last_update_time_``, which starts at the
+    load's time and then moves on by exactly one period (``common::Time(period)``, whole
+    nanoseconds), not to now. So a command waits up to a period for its slot; at 100 Hz on
+    1 ms steps the slots are 10 ms apart and each sees 11 ms since the last. A rate of 0 or
+    less: every step. The load's time here is the first step's (nothing moves between a
+    spawn and its first step)."""
+
+    def __init__(self, rate_hz: float):
+        self.period = 1.0 / rate_hz if rate_hz > 0 else 0.0
+        self.period_ns = int(round(self.period * 1e9))
+        self.last_ns: Optional[int] = None
+
+    def due(self, now_ns: int) -> Optional[float]:
+        """The seconds since the last update when the branch runs now, else None."""
+        if self.last_ns is None:
+            self.last_ns = now_ns
+        seconds = gazebo_seconds(now_ns - self.last_ns)
+        if not seconds > self.period:
+            return None
+        self.last_ns += self.period_ns
+        return seconds
+
+    def restart(self, now_ns: int) -> None:
+        """``last_update_time_ = SimTime()`` (the diff drive's Reset)."""
+        self.last_ns = now_ns

@@ -4,7 +4,8 @@ Parameters, names and defaults as gazebo_ros (noetic) reads them:
 
 leftJoint (left_joint), rightJoint (right_joint), wheelSeparation (0.34 m),
 wheelDiameter (0.15 m), wheelTorque (5 N m), wheelAcceleration (m/s^2 at the wheel's rim, as
-gazebo_ros reads it; 0 or false: no limit),
+gazebo_ros reads it; 0 or false: no limit; Noetic's ramp from the measured wheel speeds, see
+``_wheel_velocities``),
 commandTopic (cmd_vel), odometryTopic (odom), odometryFrame (odom),
 robotBaseFrame (base_footprint), publishWheelTF (false), publishOdomTF (true),
 publishWheelJointState (false: true publishes the wheels' names and positions on
@@ -13,7 +14,8 @@ odometry nor its TF; the wheels' TF and joint states go out all the same, as Noe
 gazebo_plugins/src/gazebo_ros_diff_drive.cpp:167-171, :272-274),
 odometrySource (exactly ``world`` or ``encoder``, case counting; any other text is world with
 a warning, as Noetic's map lookup: gazebo_plugins/src/gazebo_ros_diff_drive.cpp:104-107),
-updateRate (100 Hz), robotNamespace.
+updateRate (100 Hz: how often the odometry goes out, and the update slots at which the
+last cmd_vel reaches the wheels, :class:`UpdateSlots`), robotNamespace.
 
 The wheels' speeds are Noetic's ``GazeboRosDiffDrive::getWheelVelocities``: the joint
 ``<leftJoint>`` names turns at (v - w s/2)/r, the one ``<rightJoint>`` names at
@@ -34,8 +36,8 @@ from geometry_msgs.msg import TransformStamped
 from nav_msgs.msg import Odometry
 from sensor_msgs.msg import JointState
 
-from sim_bridge.drive_kinematics import body_twist, integrate, limit_change, wheel_speeds
-from sim_bridge.plugins.base import PluginError, Rate, stamp
+from sim_bridge.drive_kinematics import body_twist, integrate
+from sim_bridge.plugins.base import Rate, UpdateSlots, stamp
 from sim_bridge.plugins.drive_base import DriveBase, covariance
 from sim_bridge.poses import quaternion_from_rpy
 
@@ -43,6 +45,12 @@ from sim_bridge.poses import quaternion_from_rpy
 # (gazebo_plugins/src/gazebo_ros_diff_drive.cpp:461-467); nothing sets the twist's: all 0
 POSE_COVARIANCE = covariance(1e-5, 1e-5, 1e-3)
 TWIST_COVARIANCE = [0.0] * 36
+# the left wheel's index in the (left, right) pairs used here (Noetic's enum numbers RIGHT
+# first, gazebo_plugins/src/gazebo_ros_diff_drive.cpp:70-73)
+LEFT = 0
+# m/s at the rim: a wheel this close to its target skips the acceleration ramp for both
+# (gazebo_plugins/src/gazebo_ros_diff_drive.cpp:285-286)
+WITHIN_TARGET = 0.01
 
 
 class DiffDrive(DriveBase):
@@ -79,12 +87,16 @@ class DiffDrive(DriveBase):
             source = self.unreadable("odometrySource", source,
                                      "'world' or 'encoder' (case counts)", "world")
         self.encoder = source == "encoder"
-        self.rate = Rate(self.number("updateRate", 100.0))
+        update_rate = self.number("updateRate", 100.0)
+        self.rate = Rate(update_rate)  # the odometry, TF and joint states
+        self.slots = UpdateSlots(update_rate)  # the wheels' commands
         self.joints_out = (context.bus.publisher(self.topic("joint_states"), JointState,
                                                  queue_size=1)
                            if self.publish_joint_state else None)
         self.applied = (None, None)
-        self.wheel_target = [0.0, 0.0]
+        # Noetic's wheel_speed_instr_, m/s at the rim: set to 0 at load only
+        # (gazebo_plugins/src/gazebo_ros_diff_drive.cpp:140-141)
+        self.instructed = [0.0, 0.0]
         self._reset_odometry()
         self._last_ns = None
         self._joints = [context.robot.joint_index[self.left_joint],
@@ -96,17 +108,47 @@ class DiffDrive(DriveBase):
 
     # --- the step -------------------------------------------------------------------------
     def before_step(self, now_ns: int) -> None:
-        targets = wheel_speeds(*self.command, self.separation, self.radius)  # (left, right)
-        max_change = self.acceleration / self.radius * self.context.step_size  # rad/s per step
-        for side in (0, 1):
-            self.wheel_target[side] = limit_change(self.wheel_target[side], targets[side],
-                                                   max_change)
-        if tuple(self.wheel_target) != self.applied:
+        """Noetic's rate branch (gazebo_plugins/src/gazebo_ros_diff_drive.cpp:271-308): at
+        each update slot the last command becomes the wheels' target; between slots the
+        joint motors keep what they were given, so a command waits up to 1/updateRate."""
+        seconds = self.slots.due(now_ns)
+        if seconds is None:
+            return
+        self._set_motors(self._wheel_velocities(seconds))
+
+    def _set_motors(self, velocities) -> None:
+        """(left, right) joint speed targets, rad/s, at the motors' wheelTorque."""
+        if velocities != self.applied:
             pb.setJointMotorControlArray(
                 self.context.robot.id, self._joints, pb.VELOCITY_CONTROL,
-                targetVelocities=list(self.wheel_target), forces=[self.torque, self.torque],
+                targetVelocities=list(velocities), forces=[self.torque, self.torque],
                 physicsClientId=self.context.client)
-            self.applied = tuple(self.wheel_target)
+            self.applied = velocities
+
+    def _wheel_velocities(self, seconds: float):
+        """(left, right) joint speeds to set, rad/s, as Noetic's UpdateChild works them out
+        in m/s at the rim (gazebo_plugins/src/gazebo_ros_diff_drive.cpp:277-306,
+        getWheelVelocities :324-333): without wheelAcceleration, or while either wheel's
+        measured rim speed is within WITHIN_TARGET of its target, the targets themselves;
+        otherwise each wheel's instructed speed (kept between slots, never reset) moves by
+        the target's difference from the measured speed, at most wheelAcceleration times
+        the seconds since the last update."""
+        linear, angular = self.command
+        targets = (linear - angular * self.separation / 2.0,
+                   linear + angular * self.separation / 2.0)
+        states = self.context.robot.joint_states([self.left_joint, self.right_joint])
+        measured = [state[1] * self.radius for state in states]
+        if self.acceleration == 0 or any(abs(target - speed) < WITHIN_TARGET
+                                         for target, speed in zip(targets, measured)):
+            return tuple(target / self.radius for target in targets)
+        step = self.acceleration * seconds
+        for side, (target, speed) in enumerate(zip(targets, measured)):
+            # the left wheel ramps up when its target is at or above the measured speed, the
+            # right when strictly above (:291, :296); at equality both add 0
+            up = target >= speed if side == LEFT else target > speed
+            change = min(target - speed, step) if up else max(target - speed, -step)
+            self.instructed[side] += change
+        return tuple(speed / self.radius for speed in self.instructed)
 
     def after_step(self, now_ns: int) -> None:
         if self.encoder:
@@ -175,8 +217,14 @@ class DiffDrive(DriveBase):
         return transforms
 
     def reset(self, now_ns: int) -> None:
+        """Noetic's Reset (gazebo_plugins/src/gazebo_ros_diff_drive.cpp:183-197): the
+        command and the encoder pose to 0, the update slots from now; the instructed speeds
+        stay. The motors are stopped at once rather than at the next slot, as the world's
+        reset leaves the model at rest (what Gazebo's own Joint::Reset does to a motor's
+        target is not read here: gazebo-classic's source is not on this machine)."""
         super().reset(now_ns)
-        self.wheel_target = [0.0, 0.0]
+        self._set_motors((0.0, 0.0))
         self._reset_odometry()
         self._last_ns = None
         self.rate.reset(now_ns)
+        self.slots.restart(now_ns)

@@ -6,7 +6,8 @@ leftFrontJoint (left_front_joint), rightFrontJoint (right_front_joint),
 leftRearJoint (left_rear_joint), rightRearJoint (right_rear_joint), wheelSeparation
 (0.4 m), wheelDiameter (0.15 m), torque (5 N m), commandTopic (cmd_vel), odometryTopic
 (odom), odometryFrame (odom), robotBaseFrame (base_footprint), broadcastTF (false),
-updateRate (100 Hz), covariance_x (0.0001), covariance_y (0.0001), covariance_yaw
+updateRate (100 Hz: the odometry's rate, and the update slots at which the last cmd_vel
+reaches the wheels, :class:`UpdateSlots`), covariance_x (0.0001), covariance_y (0.0001), covariance_yaw
 (0.01), robotNamespace.
 
 As in Gazebo, odometry is the true pose of the robot (a skid-steer robot's wheels slip
@@ -20,7 +21,7 @@ from __future__ import annotations
 import pybullet as pb
 
 from sim_bridge.drive_kinematics import wheel_speeds
-from sim_bridge.plugins.base import Rate
+from sim_bridge.plugins.base import Rate, UpdateSlots
 from sim_bridge.plugins.drive_base import DriveBase, covariance
 
 
@@ -35,7 +36,9 @@ class SkidSteer(DriveBase):
         self.separation, self.radius = self.wheel_geometry(0.4, 0.15)
         self.torque = self.number("torque", 5.0)
         self.broadcast_tf = self.flag("broadcastTF", False)
-        self.rate = Rate(self.number("updateRate", 100.0))
+        update_rate = self.number("updateRate", 100.0)
+        self.rate = Rate(update_rate)  # the odometry
+        self.slots = UpdateSlots(update_rate)  # the wheels' commands
         # gazebo_plugins/src/gazebo_ros_skid_steer_drive.cpp:208-230, on both diagonals
         # (:460-465, :481-486)
         self.covariance = covariance(self.number("covariance_x", 0.0001),
@@ -46,6 +49,10 @@ class SkidSteer(DriveBase):
         self.applied = None
 
     def before_step(self, now_ns: int) -> None:
+        """Noetic's rate branch (gazebo_plugins/src/gazebo_ros_skid_steer_drive.cpp:350-383):
+        the last command reaches the wheels at the update slots only."""
+        if self.slots.due(now_ns) is None:
+            return
         left, right = wheel_speeds(*self.command, self.separation, self.radius)
         targets = (left, left, right, right)
         if targets != self.applied:
