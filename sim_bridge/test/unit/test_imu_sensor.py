@@ -88,3 +88,28 @@ def test_without_frame_name_nothing_is_published_and_the_cause_is_named(world, b
     assert "publishes nothing" in warning
     run(world, 1.5)
     assert not [t for t in bus.published if "imu" in t]
+
+
+def test_gaussian_noise_is_added_to_each_quaternion_component_and_not_normalised(world, bus):
+    """gazebo_plugins/src/gazebo_ros_imu_sensor.cpp:111-123: N(0, gaussianNoise) is added
+    to the orientation's x, y, z and w as to the rates and accelerations, and the quaternion
+    goes out as it is. At rest and level (true orientation the identity), over 300 messages
+    each component scatters by about the noise around its true value and the norms are not
+    1. Before: the orientation was the true one, exactly (no scatter, norm 1)."""
+    noise = 0.1
+    world.spawn_urdf("r", imu_robot("<frameName>base</frameName><updateRateHZ>100"
+                                    f"</updateRateHZ><gaussianNoise>{noise}</gaussianNoise>"),
+                     (0, 0, 0.1))
+    run(world, 3.0)
+    messages = bus.published["/imu_data"][-300:]
+    quaternions = np.array([(m.orientation.x, m.orientation.y, m.orientation.z,
+                             m.orientation.w) for m in messages])
+    assert quaternions.mean(axis=0) == pytest.approx([0, 0, 0, 1], abs=4 * noise / 300 ** 0.5)
+    assert quaternions.std(axis=0) == pytest.approx([noise] * 4, rel=0.15)
+    norms = np.linalg.norm(quaternions, axis=1)
+    assert np.abs(norms - 1.0).max() > noise
+    rates = np.array([(m.angular_velocity.x, m.angular_velocity.y, m.angular_velocity.z)
+                      for m in messages])
+    assert rates.std(axis=0) == pytest.approx([noise] * 3, rel=0.15)
+    assert list(messages[-1].orientation_covariance) == pytest.approx(
+        [noise ** 2, 0, 0, 0, noise ** 2, 0, 0, 0, noise ** 2])

@@ -7,7 +7,9 @@ gazebo_plugins/src/gazebo_ros_imu_sensor.cpp) reads them: topicName (imu_data, :
 frameName (required: without it the plugin stops loading and publishes nothing, :207-210),
 updateRateHZ (1 Hz when absent, :221: at most one message per 1/updateRateHZ s of the
 sensor's update times, so never faster than the sensor; 0: every step, :99),
-gaussianNoise (standard deviation on angular velocity and acceleration, seeded),
+gaussianNoise (standard deviation added to each of the orientation quaternion's four
+components, which is then not normalised, and to the angular velocity's and the
+acceleration's, :111-123; drawn from the world's seeded generator),
 xyzOffset, rpyOffset, robotNamespace.
 
 The accelerometer reads specific force, as a real one does: at rest and level it reads
@@ -23,6 +25,10 @@ from sensor_msgs.msg import Imu
 from sim_bridge.plugins.base import Plugin, PluginError, Rate, stamp
 from sim_bridge.plugins.body_state import vector3
 from sim_bridge.poses import pose6_to_position_quaternion, quaternion_from_rpy, quaternion_matrix
+
+# the values a message's noise is drawn for: the quaternion's 4, the acceleration's and the
+# angular velocity's 3 each (gazebo_plugins/src/gazebo_ros_imu_sensor.cpp:112-123)
+NOISY_VALUES = 10
 
 
 class ImuSensor(Plugin):
@@ -120,13 +126,18 @@ class ImuSensor(Plugin):
         if not self.context.bus.listened(self.output):
             return  # upstream fills and publishes only while subscribed (:102)
         if self.noise > 0:
-            specific_force = specific_force + self.context.rng.normal(0.0, self.noise, 3)
-            body_rate = body_rate + self.context.rng.normal(0.0, self.noise, 3)
+            # gazebo_plugins/src/gazebo_ros_imu_sensor.cpp:111-123: one draw for each of the
+            # quaternion's x, y, z, w, then the acceleration's and the rate's three; the
+            # noisy quaternion is published as it is, not normalised
+            noise = self.context.rng.normal(0.0, self.noise, NOISY_VALUES)
+            orientation = tuple(np.asarray(orientation) + noise[:4])
+            specific_force = specific_force + noise[4:7]
+            body_rate = body_rate + noise[7:]
         message = Imu()
         message.header.stamp = stamp(measured_ns)
         message.header.frame_id = self.frame_id
         message.orientation.x, message.orientation.y, message.orientation.z, \
-            message.orientation.w = orientation
+            message.orientation.w = (float(v) for v in orientation)
         message.angular_velocity.x, message.angular_velocity.y, message.angular_velocity.z = \
             (float(v) for v in body_rate)
         message.linear_acceleration.x, message.linear_acceleration.y, \
