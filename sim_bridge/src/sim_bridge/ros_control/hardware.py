@@ -23,6 +23,13 @@ gazebo_ros_control/src/default_robot_hw_sim.cpp; "hw_sim" below), with its joint
   no force limit follows it. Velocity joints: the velocity motor with the effort limit as
   its most force (hw_sim:240, :363); 0 leaves the joint free, as ODE's ``fmax`` 0 does.
   Effort joints: the (saturated) command as a joint torque (hw_sim:313-318).
+- ``<robotNamespace>/gazebo_ros_control/pid_gains/<joint>`` (control_toolbox's Pid gains,
+  see :mod:`.pid`) on a position or velocity joint: the joint becomes effort-driven
+  (hw_sim:216-233), its command reached through that PID every write, computeCommand(error,
+  dt), the effort clamped to ±the effort limit (hw_sim:328-353, :370-380); the position error
+  shortest_angular_distance_with_limits within the joint's position limits for a revolute
+  joint, shortest_angular_distance for a continuous one, the difference otherwise. Gains
+  without a numeric ``p`` leave the joint as it was (Pid::init fails), named in a warning.
 - before a controller commands them, position joints hold where they were spawned (or set
   by ``spawn_model -J`` or ``set_model_configuration``), velocity joints hold still, effort
   joints are free. Here sim_bridge differs on purpose: Noetic's position command starts at
@@ -31,12 +38,12 @@ gazebo_ros_control/src/default_robot_hw_sim.cpp; "hw_sim" below), with its joint
   (gazebo_ros_pkgs issue #93, open, labelled bug) that the design does not copy
   (sim_bridge/doc/ros_control.md, "Where sim_bridge differs on purpose").
 
-Not read: ``<safety_controller>`` soft limits (hw_sim:420-421, :456-482), the
-``gazebo_ros_control/pid_gains`` (hw_sim:216-245), ``eStopTopic``.
+Not read: ``<safety_controller>`` soft limits (hw_sim:420-421, :456-482), ``eStopTopic``.
 """
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import dataclass
 from typing import Any, Dict, List, Mapping, Optional
 
@@ -44,6 +51,9 @@ import numpy as np
 import pybullet as pb
 
 from sim_bridge.plugins.base import PluginError, resolve_topic
+from sim_bridge.ros_control.angles import (shortest_angular_distance,
+                                           shortest_angular_distance_with_limits)
+from sim_bridge.ros_control.pid import Pid
 
 INTERFACES = {
     "PositionJointInterface": "position",
@@ -52,6 +62,8 @@ INTERFACES = {
 }
 # DefaultRobotHWSim's effort limit for a joint with no limit at all: DBL_MAX (hw_sim:404)
 UNLIMITED = math.inf
+# its position limits for the PID's error when the joint has none: ±DBL_MAX (hw_sim:402-403)
+NO_POSITION_LIMIT = sys.float_info.max
 # the mimic joint plugin's fallback force (plugins/mimic_joint.py imports it); ros_control's
 # joints do not use it
 DEFAULT_EFFORT = 1000.0
@@ -162,6 +174,28 @@ class JointHandle:
     command: float = 0.0
     # the handles' prev_cmd_: position (NaN until the first write), velocity (0.0)
     previous: float = math.nan
+    # gazebo_ros_control/pid_gains/<joint>: POSITION_PID or VELOCITY_PID (hw_sim:216-233)
+    pid: Optional[Pid] = None
+    # registerJointLimits' lower and upper limits, for the PID's error (hw_sim:401-403, :448-452)
+    lower_limit: float = -NO_POSITION_LIMIT
+    upper_limit: float = NO_POSITION_LIMIT
+    # the effort the last write applied (SetForce), what readSim's GetForce(0) reads back
+    applied_effort: float = 0.0
+
+    def pid_effort(self, position: float, velocity: float, period: float) -> float:
+        """POSITION_PID and VELOCITY_PID (hw_sim:328-353, :370-380): the PID's effort toward
+        the (saturated) command, clamped to ±the effort limit."""
+        if self.interface == "velocity":
+            error = self.command - velocity
+        elif self.joint_type == "revolute":
+            error = shortest_angular_distance_with_limits(position, self.command,
+                                                          self.lower_limit, self.upper_limit)
+        elif self.joint_type == "continuous":
+            error = shortest_angular_distance(position, self.command)
+        else:
+            error = self.command - position
+        effort = self.pid.compute(error, period)
+        return _saturate(effort, -self.effort_limit, self.effort_limit)
 
     def saturate(self, position: float, velocity: float, period: float) -> None:
         """The saturation handle's enforceLimits on ``command`` (hw_sim:302-307)."""
@@ -224,8 +258,14 @@ class RobotHardware:
                 limits = self._limits(context.bus, namespace, description, interface)
                 effort = (limits.max_effort if limits is not None and limits.has_effort_limits
                           else UNLIMITED)  # hw_sim:404, :453-454
-                self.joints[joint] = JointHandle(joint, robot.joint_index[joint], interface,
-                                                 description.type, effort, limits)
+                handle = JointHandle(joint, robot.joint_index[joint], interface,
+                                     description.type, effort, limits)
+                if limits is not None and limits.has_position_limits:  # hw_sim:448-452
+                    handle.lower_limit = limits.min_position
+                    handle.upper_limit = limits.max_position
+                if interface != "effort":
+                    handle.pid = self._pid_gains(context.bus, namespace, joint)
+                self.joints[joint] = handle
         self.names: List[str] = list(self.joints)
         self._indices = [self.joints[n].index for n in self.names]
         self.positions = np.zeros(len(self.names))
@@ -258,6 +298,23 @@ class RobotHardware:
                               "efforts limits specification.")
         return limits
 
+    @staticmethod
+    def _pid_gains(bus, namespace: str, joint: str) -> Optional[Pid]:
+        """``<robotNamespace>/gazebo_ros_control/pid_gains/<joint>`` (hw_sim:220-222): a Pid,
+        or None when there are none (the joint is set directly) or they have no ``p``."""
+        path = resolve_topic(namespace, f"gazebo_ros_control/pid_gains/{joint}")
+        gains = bus.get_param(path, None)
+        if gains is None:  # a parameter tree given whole (the RecordingBus keeps it so)
+            tree = bus.get_param(resolve_topic(namespace, "gazebo_ros_control/pid_gains"), None)
+            gains = tree.get(joint) if isinstance(tree, Mapping) else None
+        if gains is None:
+            return None
+        try:
+            return Pid(gains, f"'{path}'")
+        except PluginError as error:
+            bus.warn(f"{error}; joint '{joint}' is driven without a PID")
+            return None
+
     def hold(self) -> None:
         """The resting commands: position joints where they are (Noetic: 0, hw_sim:138, a
         fault not copied, see the module's docstring), velocity joints still, effort joints
@@ -275,7 +332,9 @@ class RobotHardware:
         # an effort joint's effort is the force its last command applied (readSim's
         # GetForce(0) after writeSim's SetForce, hw_sim:281, :316): pybullet's applied
         # torque of a torque-controlled joint is the braking motor of its URDF friction
-        self.efforts = np.array([h.command if h.interface == "effort" else s[3]
+        # a PID-driven joint's, likewise, the effort its PID applied
+        self.efforts = np.array([h.command if h.interface == "effort" else
+                                 h.applied_effort if h.pid is not None else s[3]
                                  for s, h in zip(states, self.joints.values())])
 
     def state(self, joint: str):
@@ -287,11 +346,20 @@ class RobotHardware:
         period = self.step_size if period is None else period
         by_mode: Dict[str, List[JointHandle]] = {}
         for k, handle in enumerate(self.joints.values()):
-            handle.saturate(float(self.positions[k]), float(self.velocities[k]), period)
-            by_mode.setdefault(handle.interface, []).append(handle)
+            position, velocity = float(self.positions[k]), float(self.velocities[k])
+            handle.saturate(position, velocity, period)
+            if handle.pid is not None:
+                handle.applied_effort = handle.pid_effort(position, velocity, period)
+                by_mode.setdefault("pid", []).append(handle)
+            else:
+                by_mode.setdefault(handle.interface, []).append(handle)
         for interface, handles in by_mode.items():
             indices = [h.index for h in handles]
-            if interface == "position":  # SetPosition: no force limit (hw_sim:320-326)
+            if interface == "pid":  # SetForce(the PID's effort) (hw_sim:351, :379)
+                pb.setJointMotorControlArray(
+                    self.body, indices, pb.TORQUE_CONTROL,
+                    forces=[h.applied_effort for h in handles], physicsClientId=self.client)
+            elif interface == "position":  # SetPosition: no force limit (hw_sim:320-326)
                 pb.setJointMotorControlArray(
                     self.body, indices, pb.POSITION_CONTROL,
                     targetPositions=[h.command for h in handles],
