@@ -56,11 +56,13 @@ from sim_bridge.stop_signals import StopSignals, shut_rospy_down
 from gazebo_msgs.srv import (ApplyBodyWrench, ApplyBodyWrenchResponse, ApplyJointEffort,
                             ApplyJointEffortResponse, BodyRequest, BodyRequestResponse,
                             DeleteModel, DeleteModelResponse, GetLinkState,
+                            GetJointProperties, GetJointPropertiesResponse,
                             GetLinkStateResponse, GetModelProperties,
                             GetModelPropertiesResponse, GetModelState, GetModelStateResponse,
                             GetPhysicsProperties, GetPhysicsPropertiesResponse,
                             GetWorldProperties, GetWorldPropertiesResponse, JointRequest,
                             JointRequestResponse, SetLinkState, SetLinkStateResponse,
+                            SetJointProperties, SetJointPropertiesResponse,
                             SetModelConfiguration, SetModelConfigurationResponse, SetModelState,
                             SetModelStateResponse, SetPhysicsProperties,
                             SetPhysicsPropertiesResponse, SpawnModel, SpawnModelResponse)
@@ -88,6 +90,13 @@ PERFORMANCE_QUEUE = 10
 # :242-249)
 CAMERA_TYPES = frozenset(("camera", "depth", "multicamera", "wideanglecamera"))
 NO_FPS = -1.0
+# get_joint_properties' type constants by URDF joint type (gazebo_msgs/GetJointProperties)
+JOINT_TYPES = {"revolute": GetJointPropertiesResponse.REVOLUTE,
+               "continuous": GetJointPropertiesResponse.CONTINUOUS,
+               "prismatic": GetJointPropertiesResponse.PRISMATIC,
+               "fixed": GetJointPropertiesResponse.FIXED}
+# gazebo_msgs/ODEJointProperties' fields with no pybullet counterpart
+ODE_JOINT_ONLY = ("erp", "cfm", "stop_erp", "stop_cfm", "fudge_factor")
 # What a request gets once the simulator has been told to stop.
 STOPPING = "the simulator is shutting down"
 # While paused, /clock is repeated this often (wall seconds) for late subscribers.
@@ -397,6 +406,8 @@ class SimBridgeNode:
             ("get_model_properties", GetModelProperties, self._model_properties),
             ("get_link_state", GetLinkState, self._get_link_state),
             ("set_link_state", SetLinkState, self._set_link_state),
+            ("get_joint_properties", GetJointProperties, self._get_joint_properties),
+            ("set_joint_properties", SetJointProperties, self._set_joint_properties),
             ("get_physics_properties", GetPhysicsProperties, self._get_physics),
             ("set_physics_properties", SetPhysicsProperties, self._set_physics),
             ("apply_body_wrench", ApplyBodyWrench, self._apply_wrench),
@@ -569,6 +580,28 @@ class SimBridgeNode:
             state.reference_frame, position, orientation, _vector(state.twist.linear),
             _vector(state.twist.angular)))
         return SetLinkStateResponse(True, "SetLinkState: success")
+
+    def _get_joint_properties(self, request):
+        properties = self.world.joint_properties(request.joint_name)
+        # the joint's own type (Noetic answers REVOLUTE for every joint, :1152-1153) and
+        # damping (Noetic leaves it empty, :1155-1156)
+        return GetJointPropertiesResponse(
+            type=JOINT_TYPES.get(properties.type, GetJointPropertiesResponse.REVOLUTE),
+            damping=list(properties.damping), position=list(properties.position),
+            rate=list(properties.rate), success=True,
+            status_message="GetJointProperties: got properties")
+
+    def _set_joint_properties(self, request):
+        config = request.ode_joint_config
+        self.world.set_joint_properties(request.joint_name, config.damping, config.loStop,
+                                        config.hiStop, config.fmax, config.vel)
+        # ODE's constraint settings, which pybullet's joints do not have
+        ignored = [name for name in ODE_JOINT_ONLY if getattr(config, name)]
+        if ignored:
+            rospy.logwarn(f"SetJointProperties: {', '.join(ignored)} not applied to joint "
+                          f"'{request.joint_name}' (the solver is pybullet's, not ODE); "
+                          "damping, hiStop, loStop, fmax and vel are")
+        return SetJointPropertiesResponse(True, "SetJointProperties: properties set")
 
     def _get_physics(self, _request):
         properties = self.world.physics_properties()

@@ -127,6 +127,9 @@ class Model:
     # model's frame
     link_in_model: Transform = IDENTITY
     com_in_model: Transform = IDENTITY
+    # what set_joint_properties changed: joint → damping (N m s/rad), (lower, upper) stops
+    joint_damping: Dict[str, float] = field(default_factory=dict)
+    joint_stops: Dict[str, Tuple[float, float]] = field(default_factory=dict)
 
 
 @dataclass(frozen=True)
@@ -152,6 +155,16 @@ class ModelProperties:
     joint_names: Tuple[str, ...]
     child_model_names: Tuple[str, ...]
     is_static: bool
+
+
+@dataclass(frozen=True)
+class JointProperties:
+    """gazebo_msgs/GetJointProperties' answer: the type's name, one value per axis."""
+
+    type: str
+    damping: Tuple[float, ...]
+    position: Tuple[float, ...]
+    rate: Tuple[float, ...]
 
 
 @dataclass(frozen=True)
@@ -868,6 +881,65 @@ class World:
         structure = model.structure
         return ModelProperties("", structure.canonical, structure.bodies, structure.geoms,
                                structure.joints, (), model.kind == "static")
+
+    def joint_properties(self, name: str) -> JointProperties:
+        """gazebo_ros's get_joint_properties: the joint's type, damping, position and
+        rate (one axis), from pybullet's joint."""
+        model, joint = self.find_joint(name)
+        described = model.robot.model.joints[joint]
+        position, rate = model.robot.joint_position_velocity(joint)
+        return JointProperties(described.type,
+                               (model.joint_damping.get(joint, described.damping),),
+                               (position,), (rate,))
+
+    def set_joint_properties(self, name: str, damping: Sequence[float] = (),
+                             lo_stop: Sequence[float] = (), hi_stop: Sequence[float] = (),
+                             fmax: Sequence[float] = (), vel: Sequence[float] = ()) -> None:
+        """gazebo_ros's set_joint_properties, the parts of ODE's joint settings pybullet
+        has: damping (its joint damping), the stops (its joint limits) and the joint motor
+        (fmax, vel: pybullet's velocity motor, which also carries the URDF friction, as
+        ODE's motor does in Gazebo). Each list holds a value per axis; the joints here
+        have one. An empty list changes nothing."""
+        model, joint = self.find_joint(name)
+        described = model.robot.model.joints[joint]
+        if not described.movable:
+            raise SimError(f"joint '{model.name}::{joint}' is {described.type}: it has no "
+                           "axis to set")
+        given = dict(damping=damping, lo_stop=lo_stop, hi_stop=hi_stop, fmax=fmax, vel=vel)
+        for what, values in given.items():
+            if len(values) > 1:
+                raise SimError(f"{what} has {len(values)} values; joint '{model.name}::"
+                               f"{joint}' has one axis")
+            _finite(values, what)
+        if damping and damping[0] < 0:
+            raise SimError(f"damping {damping[0]} is negative")
+        if fmax and fmax[0] < 0:
+            raise SimError(f"fmax {fmax[0]} is negative")
+        limit = described.limit
+        lower, upper = model.joint_stops.get(
+            joint, (limit.lower, limit.upper) if limit and described.type != "continuous"
+            else (-math.inf, math.inf))
+        lower = lo_stop[0] if lo_stop else lower
+        upper = hi_stop[0] if hi_stop else upper
+        if (lo_stop or hi_stop) and lower > upper:
+            raise SimError(f"loStop {lower} is above hiStop {upper}")
+        robot, index = model.robot, model.robot.joint_index[joint]
+        if damping:
+            model.joint_damping[joint] = float(damping[0])
+            pb.changeDynamics(robot.id, index, jointDamping=float(damping[0]),
+                              physicsClientId=self.client)
+        if lo_stop or hi_stop:
+            model.joint_stops[joint] = (float(lower), float(upper))
+            # pybullet takes finite limits: an open side is as far as it carries
+            pb.changeDynamics(robot.id, index,
+                              jointLowerLimit=max(float(lower), -MAX_COORDINATE),
+                              jointUpperLimit=min(float(upper), MAX_COORDINATE),
+                              physicsClientId=self.client)
+        if fmax or vel:
+            force = float(fmax[0]) if fmax else described.friction
+            pb.setJointMotorControl2(robot.id, index, pb.VELOCITY_CONTROL,
+                                     targetVelocity=float(vel[0]) if vel else 0.0,
+                                     force=force, physicsClientId=self.client)
 
     def sensors(self) -> List[SensorRate]:
         """Every robot's sensors with the rate they update at in simulated time: their

@@ -10,14 +10,16 @@ import pytest
 from geometry_msgs.msg import Pose
 from std_srvs.srv import Empty, EmptyRequest
 
-from gazebo_msgs.msg import LinkState, ModelState
+from gazebo_msgs.msg import LinkState, ModelState, ODEJointProperties
 from gazebo_msgs.srv import (ApplyBodyWrench, ApplyBodyWrenchRequest, BodyRequest,
                              BodyRequestRequest, DeleteModel, DeleteModelRequest,
-                             GetModelProperties, GetModelPropertiesRequest, GetModelState,
+                             GetJointProperties, GetModelProperties,
+                             GetModelPropertiesRequest, GetModelState,
                              GetModelStateRequest, GetPhysicsProperties,
                              GetPhysicsPropertiesRequest, GetWorldProperties,
                              GetWorldPropertiesRequest, JointRequest, JointRequestRequest,
-                             SetModelConfiguration, SetModelConfigurationRequest,
+                             SetJointProperties, SetModelConfiguration,
+                             SetModelConfigurationRequest,
                              SetModelState, SetModelStateRequest, SpawnModel,
                              SpawnModelRequest)
 from sim_bridge.ros_node import Config, SimBridgeNode
@@ -303,3 +305,38 @@ def test_performance_metrics_measure_the_real_time_factor_and_the_sensors_rates(
     assert (eye.sim_update_rate, eye.real_update_rate, eye.fps) == pytest.approx((40, 80, 80))
     assert (imu.sim_update_rate, imu.real_update_rate, imu.fps) == pytest.approx(
         (1000, 2000, -1))
+
+
+ROTOR_URDF = """<robot name="rotor"><link name="world"/><link name="base"><inertial><mass
+  value="1"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
+  </link><joint name="fix" type="fixed"><parent link="world"/><child link="base"/>
+  <origin xyz="0 0 0.5"/></joint><link name="disc"><inertial><mass value="2"/><inertia
+  ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.2"/></inertial></link>
+  <joint name="spin" type="continuous"><parent link="base"/><child link="disc"/>
+  <axis xyz="0 0 1"/></joint></robot>"""
+
+
+def test_joint_properties_services_answer_and_set(node):
+    """get_joint_properties (:1128-1172) and set_joint_properties (:1531-1582): the type
+    constant of the joint's own type (Noetic: REVOLUTE for all, :1152-1153), position
+    and rate from pybullet; a damping set is what the next get reports; an unknown joint
+    answers success false (:1146-1148, :1551-1553)."""
+    node.world.spawn_urdf("rotor", ROTOR_URDF, (0.0, 0.0, 0.0))
+    robot = node.world.models["rotor"].robot
+    pb.resetJointState(robot.id, robot.joint_index["spin"], 0.3, 1.5,
+                       physicsClientId=node.world.client)
+    answer = call(node, GetJointProperties, node._get_joint_properties, joint_name="spin")
+    assert answer.success and answer.type == answer.CONTINUOUS
+    assert list(answer.position) == pytest.approx([0.3]) and list(answer.rate) == \
+        pytest.approx([1.5])
+    config = ODEJointProperties(damping=[0.4], erp=[0.5])
+    answer = call(node, SetJointProperties, node._set_joint_properties, joint_name="spin",
+                  ode_joint_config=config)
+    assert answer.success and answer.status_message == "SetJointProperties: properties set"
+    answer = call(node, GetJointProperties, node._get_joint_properties, joint_name="spin")
+    assert list(answer.damping) == [0.4]
+    missing = call(node, GetJointProperties, node._get_joint_properties, joint_name="elbow")
+    assert not missing.success and missing.status_message.startswith("GetJointProperties: ")
+    missing = call(node, SetJointProperties, node._set_joint_properties, joint_name="elbow",
+                   ode_joint_config=ODEJointProperties())
+    assert not missing.success and missing.status_message.startswith("SetJointProperties: ")

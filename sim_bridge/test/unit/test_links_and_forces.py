@@ -4,6 +4,7 @@ and joint efforts, on pybullet.DIRECT: every number from mechanics (Δv = F·d/m
 import math
 
 import numpy as np
+import pybullet as pb
 import pytest
 
 from sim_bridge.poses import quaternion_from_rpy, yaw_from_quaternion
@@ -335,3 +336,59 @@ def test_deleting_a_model_ends_its_forces(world, rotor):
     world.delete("rotor")
     assert not world.forces
     run(world, 0.01)
+
+
+# --- joint properties -------------------------------------------------------------------
+def test_joint_properties_are_pybullets_joint(world, rotor):
+    """get_joint_properties (gazebo_ros_api_plugin.cpp:1128-1172): position and rate of
+    the joint's axis, as pybullet's joint has them; here also its own type and damping
+    (Noetic answers REVOLUTE and no damping, :1152-1156)."""
+    world.apply_joint_effort("spin", 0.5, duration_ns=int(0.4 * SECOND))
+    run(world, 0.5)
+    position, rate = pb.getJointState(rotor.robot.id, rotor.robot.joint_index["spin"],
+                                      physicsClientId=world.client)[:2]
+    properties = world.joint_properties("rotor::spin")
+    assert properties.type == "continuous" and properties.damping == (0.0,)
+    assert properties.position == (position,) and properties.rate == (rate,)
+    assert rate == pytest.approx(1.0, rel=1e-3)
+
+
+def test_set_joint_damping_slows_the_joint_as_damping_does(world, rotor):
+    """set_joint_properties' damping (SetDamping, :1556-1557) is pybullet's joint damping:
+    a torque of -d w on the disc (I = 0.2 kg m²), so w falls by exp(-d t / I): to e^-1 in
+    1 s at d = 0.2 N m s. Before: no such service."""
+    world.apply_joint_effort("spin", 0.5, duration_ns=int(0.4 * SECOND))
+    run(world, 0.4)
+    start = rotor.robot.joint_position_velocity("spin")[1]
+    world.set_joint_properties("spin", damping=[0.2])
+    run(world, 1.0)
+    assert rotor.robot.joint_position_velocity("spin")[1] == pytest.approx(
+        start * math.exp(-1.0), rel=0.02)
+    assert world.joint_properties("spin").damping == (0.2,)
+
+
+def test_set_joint_stops_and_motor_hold_the_joint(world, rotor):
+    """hiStop and loStop (:1558-1561) are pybullet's joint limits: pushed, the continuous
+    joint stops at hiStop; fmax and vel (:1572-1575) are the joint's velocity motor: it
+    turns the disc at vel with at most fmax."""
+    world.set_joint_properties("spin", lo_stop=[-0.2], hi_stop=[0.5])
+    world.apply_joint_effort("spin", 0.5, duration_ns=int(2.0 * SECOND))
+    run(world, 2.0)
+    assert rotor.robot.joint_position_velocity("spin")[0] == pytest.approx(0.5, abs=0.01)
+    world.set_joint_properties("spin", lo_stop=[-1e9], hi_stop=[1e9], fmax=[10.0],
+                               vel=[-2.0])
+    run(world, 0.5)
+    assert rotor.robot.joint_position_velocity("spin")[1] == pytest.approx(-2.0, abs=0.01)
+
+
+@pytest.mark.parametrize("name, arguments, words", [
+    ("fix", {}, "is fixed"),
+    ("spin", dict(damping=[1.0, 2.0]), "has one axis"),
+    ("spin", dict(lo_stop=[1.0], hi_stop=[0.0]), "above hiStop"),
+    ("spin", dict(damping=[-1.0]), "negative"),
+    ("elbow", {}, "no joint named 'elbow'"),
+])
+def test_joint_properties_that_cannot_be_set_are_refused(world, rotor, name, arguments,
+                                                          words):
+    with pytest.raises(SimError, match=words):
+        world.set_joint_properties(name, **arguments)
