@@ -257,13 +257,17 @@ class RosControl(Plugin):
         self.hardware.write(self.period)
 
     def reset(self, now_ns: int) -> None:
-        """After a reset or new joint positions: hold there, controllers start over."""
+        """After reset_world, reset_simulation or new joint positions: as Noetic's Reset
+        (plugin:261-266), only the timers start over: the next step updates the controllers,
+        which go on running with their last commands (a position-controlled arm is driven
+        back to where it was commanded). Joints no running controller commands hold where
+        they now are, as after the spawn."""
         self.now_ns = now_ns
         self.rate.reset(now_ns)
-        self.hardware.hold()
-        for loaded in self.controllers.values():
-            if loaded.state == "running":
-                loaded.controller.start(now_ns)
+        commanded = [joint for loaded in self.controllers.values()
+                     if loaded.state == "running" and loaded.controller.interface
+                     for joint in loaded.controller.joints]
+        self.hardware.hold(keep=commanded)
 
     def close(self) -> None:
         for loaded in self.controllers.values():

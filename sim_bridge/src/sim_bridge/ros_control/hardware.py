@@ -45,7 +45,7 @@ from __future__ import annotations
 import math
 import sys
 from dataclasses import dataclass
-from typing import Any, Dict, List, Mapping, Optional
+from typing import Any, Dict, Iterable, List, Mapping, Optional
 
 import numpy as np
 import pybullet as pb
@@ -315,12 +315,16 @@ class RobotHardware:
             bus.warn(f"{error}; joint '{joint}' is driven without a PID")
             return None
 
-    def hold(self) -> None:
+    def hold(self, keep: Iterable[str] = ()) -> None:
         """The resting commands: position joints where they are (Noetic: 0, hw_sim:138, a
         fault not copied, see the module's docstring), velocity joints still, effort joints
-        free."""
+        free; the joints in ``keep`` (a running controller's) keep their commands and their
+        saturation's previous command."""
+        keep = set(keep)
         self.read()
         for position, handle in zip(self.positions, self.joints.values()):
+            if handle.name in keep:
+                continue
             handle.command = float(position) if handle.interface == "position" else 0.0
             handle.reset_saturation()
         self.write(self.step_size)
