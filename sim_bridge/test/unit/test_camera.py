@@ -214,8 +214,12 @@ def test_a_depth_camera_measures_the_world_in_its_optical_frame(scene, bus):
                                                  "formats": ["<f4"] * 4,
                                                  "offsets": [0, 4, 8, 16], "itemsize": 32}))
     points = points.reshape(HEIGHT, WIDTH)
+    # the rgb field's bytes are the R8G8B8 image's in its order, red first, so red is the
+    # lowest byte of the little-endian word (gazebo_plugins/src/
+    # gazebo_ros_openni_kinect.cpp:379-386); before: PCL's order, blue lowest
     colour = points["rgb"].view(np.uint32)
-    r, g, b = colour >> 16 & 255, colour >> 8 & 255, colour & 255
+    r, g, b = colour & 255, colour >> 8 & 255, colour >> 16 & 255
+    assert not (colour >> 24).any()
     red = (r > 150) & (g < 80) & (b < 80)
     green = (g > 150) & (r < 80) & (b < 80)
     # the crates' faces 2.65 m ahead: the red one at optical x -0.25..0.25 m, the green one
@@ -328,3 +332,76 @@ def test_a_camera_without_frame_name_stamps_an_empty_frame(world, bus, tf_prefix
     for topic in ("/front/image_raw", "/front/camera_info", "/kinect/points",
                   "/kinect/depth/image_raw"):
         assert bus.last(topic).header.frame_id == frame_id, topic
+
+
+def stamps_ms(bus, topic):
+    return [round(m.header.stamp.to_sec() * 1000) for m in bus.published.get(topic, [])]
+
+
+@pytest.mark.parametrize("plugin_file", [OPENNI, DEPTH_CAMERA])
+def test_a_depth_plugins_update_rate_throttles_its_infos_not_its_frames(world, bus,
+                                                                       plugin_file):
+    """OnNewDepthFrame and OnNewImageFrame publish every frame of the sensor (10 Hz here)
+    whatever the plugin's updateRate (gazebo_plugins/src/gazebo_ros_openni_kinect.cpp:
+    194-273, gazebo_ros_depth_camera.cpp:278-327, :446-483); the camera infos go out once
+    at least 1/updateRate s (0.5 s here) have passed since each last did
+    (gazebo_ros_camera_utils.cpp:679-686, gazebo_ros_openni_kinect.cpp:474-493). Before:
+    every topic at the plugin's 2 Hz."""
+    world.spawn_urdf("cam_bot", kinect("<updateRate>2</updateRate>", plugin_file),
+                     (0, 0, CAMERA_HEIGHT))
+    run(world, 1.05)
+    frames = [1] + list(range(100, 1001, 100))  # the sensor's first frame at the first step
+    for topic in ("image_raw", "depth/image_raw", "points"):
+        assert stamps_ms(bus, f"/kinect/{topic}") == frames
+    # the infos' last times start at 0 (gazebo_ros_camera_utils.cpp:53,
+    # gazebo_ros_openni_kinect.cpp:55, gazebo_ros_depth_camera.cpp:56)
+    for topic in ("camera_info", "depth/camera_info"):
+        assert stamps_ms(bus, f"/kinect/{topic}") == [500, 1000]
+
+
+def cloud_of(world, bus, plugin_file, plugin="", image_format="R8G8B8"):
+    world.add_sdf_model(crate("red", 3.0, 0.0, (1, 0, 0, 1)))
+    world.spawn_urdf("cam_bot", kinect(plugin, plugin_file).replace(
+        "<format>R8G8B8</format>", f"<format>{image_format}</format>"), (0, 0, CAMERA_HEIGHT))
+    run(world, 0.15)
+    return bus.last("/kinect/points")
+
+
+@pytest.mark.parametrize("plugin_file, dense", [(OPENNI, False), (DEPTH_CAMERA, True)])
+def test_a_cloud_is_dense_unless_a_point_is_cut_off(world, bus, plugin_file, dense):
+    """is_dense starts true and turns false at the first point cut off to NaN
+    (gazebo_plugins/src/gazebo_ros_depth_camera.cpp:641, :684;
+    gazebo_ros_openni_kinect.cpp:333, :375). The openni plugin cuts the sky beyond 5 m;
+    the depth camera plugin keeps every depth above 0.4 m, and the nearest thing here (the
+    floor) is 0.97 m away, so its cloud is dense. Before: never dense."""
+    cloud = cloud_of(world, bus, plugin_file)
+    assert cloud.is_dense is dense
+
+
+@pytest.mark.parametrize("image_format, red_byte", [("R8G8B8", 0), ("B8G8R8", 2)])
+def test_the_clouds_colour_bytes_are_the_images(world, bus, image_format, red_byte):
+    """The rgb field's first three bytes are the image's pixel bytes in the image's order
+    (gazebo_plugins/src/gazebo_ros_depth_camera.cpp:692-698), the fourth 0: the red
+    crate's red is the first byte from an R8G8B8 camera and the third from a B8G8R8 one,
+    the other two 0. Before: PCL's order (blue, green, red) for both."""
+    cloud = cloud_of(world, bus, DEPTH_CAMERA, image_format=image_format)
+    raw = np.frombuffer(cloud.data, np.uint8).reshape(HEIGHT, WIDTH, 32)
+    centre = raw[HEIGHT // 2, WIDTH // 2, 16:20]
+    assert centre[red_byte] > 150
+    assert [int(centre[i]) for i in range(4) if i != red_byte] == [0, 0, 0]
+
+
+@pytest.mark.parametrize("plugin_file", [OPENNI, DEPTH_CAMERA])
+def test_use_depth_16uc1_format_publishes_millimetres(world, bus, plugin_file):
+    """useDepth16UC1Format true: a 16UC1 depth image of millimetres, 0 where the 32-bit one
+    has NaN (gazebo_plugins/src/gazebo_ros_depth_camera.cpp:136-140, :744-775;
+    gazebo_ros_openni_kinect.cpp:110-114, :429-468). The red crate's face 2.65 m ahead
+    reads about 2650; the sky, beyond the openni plugin's 5 m, reads 0. Before: 32FC1
+    whatever the tag said."""
+    cloud_of(world, bus, plugin_file, "<useDepth16UC1Format>true</useDepth16UC1Format>")
+    message = bus.last("/kinect/depth/image_raw")
+    assert (message.encoding, message.step) == ("16UC1", 2 * WIDTH)
+    depth = np.frombuffer(message.data, np.uint16).reshape(HEIGHT, WIDTH)
+    assert int(depth[HEIGHT // 2, WIDTH // 2]) == pytest.approx(2650, abs=20)
+    if plugin_file == OPENNI:
+        assert depth[0, WIDTH // 2] == 0

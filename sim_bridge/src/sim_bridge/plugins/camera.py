@@ -31,6 +31,7 @@ Stamps are simulated time.
 """
 from __future__ import annotations
 
+import copy
 import dataclasses
 import math
 from typing import Optional, Tuple
@@ -38,6 +39,7 @@ from typing import Optional, Tuple
 import numpy as np
 import pybullet as pb
 from sensor_msgs.msg import CameraInfo, Image, PointCloud2, PointField
+from std_msgs.msg import Header
 
 from sim_bridge.plugins.base import (Plugin, PluginError, Rate, SensorPlugin, Throttle,
                                      element_pose, stamp)
@@ -164,10 +166,15 @@ class Camera(SensorPlugin):
             self.throttle = Throttle(plugin_rate)
             rate = sensor_rate if plugin_rate <= 0 else (
                 plugin_rate if sensor_rate <= 0 else min(plugin_rate, sensor_rate))
-        else:  # the depth cameras: the plugin's rate, else the sensor's (unchanged)
-            rate = plugin_rate if plugin_rate > 0 else sensor_rate
-            self.rate = Rate(rate)
+        else:
+            # the depth cameras: every frame of the sensor (OnNewDepthFrame and
+            # OnNewImageFrame check no rate, gazebo_plugins/src/gazebo_ros_openni_kinect.cpp:
+            # 194-273, gazebo_ros_depth_camera.cpp:278-327, :446-483); the plugin's
+            # updateRate throttles their camera infos alone (DepthCamera)
+            rate = sensor_rate
+            self.rate = Rate(sensor_rate)
             self.throttle = Throttle(0.0)
+        self.plugin_rate = plugin_rate
         frames = rate if rate > 0 else 1.0 / context.step_size  # a second of simulated time
         frame_seconds = self.view.width * self.view.height * SECONDS_PER_PIXEL
         if frames * frame_seconds > COSTLY_SHARE:
@@ -271,12 +278,18 @@ class Camera(SensorPlugin):
             return
         self.throttle.mark(now_ns)
         pixels, depth = self.capture()
-        self.publish(stamp(now_ns), pixels, depth)
+        self.publish(now_ns, pixels, depth)
 
-    def publish(self, header_stamp, pixels: np.ndarray, depth: np.ndarray) -> None:
+    def publish(self, now_ns: int, pixels: np.ndarray, depth: np.ndarray) -> None:
+        header_stamp = stamp(now_ns)
         self.image_out.publish(self.image(header_stamp, pixels, self.view.encoding))
-        self.info.header.stamp = header_stamp
-        self.info_out.publish(self.info)
+        self.info_out.publish(self.info_message(header_stamp))
+
+    def info_message(self, header_stamp) -> CameraInfo:
+        """The CameraInfo stamped, a message of its own (one published is never changed)."""
+        message = copy.copy(self.info)
+        message.header = Header(stamp=header_stamp, frame_id=self.info.header.frame_id)
+        return message
 
     def image(self, header_stamp, pixels: np.ndarray, encoding: str) -> Image:
         image = Image()
@@ -292,6 +305,9 @@ class Camera(SensorPlugin):
 # (gazebo_plugins/src/gazebo_ros_openni_kinect.cpp:105); gazebo_ros_depth_camera reads none
 # and keeps every depth above pointCloudCutoff (gazebo_ros_depth_camera.cpp:675, :762)
 CUTOFF_MAX_PLUGIN = "libgazebo_ros_openni_kinect.so"
+# useDepth16UC1Format: millimetres in an unsigned 16-bit pixel (REP 118), so 65.535 m at most
+MILLIMETRES_PER_METRE = 1000.0
+MAX_DEPTH_16UC1 = 2 ** 16
 
 
 class DepthCamera(Camera):
@@ -301,11 +317,17 @@ class DepthCamera(Camera):
     gazebo_plugins/src/gazebo_ros_camera_utils.cpp:124, :132), the depth image
     (``depthImageTopicName``, depth/image_raw: 32FC1, metres along the optical axis, NaN
     at or below ``pointCloudCutoff`` (0.4 m) and, for the openni plugin alone, at or beyond
-    ``pointCloudCutoffMax`` (5 m); +inf where nothing is within the far clip) with its info
+    ``pointCloudCutoffMax`` (5 m); +inf where nothing is within the far clip; 16UC1
+    millimetres with ``useDepth16UC1Format``) with its info
     (``depthImageCameraInfoTopicName``, depth/camera_info), and the organised point cloud
     (``pointCloudTopicName``, points: x y z rgb in the optical frame, x right, y down, z
-    ahead; NaN where the depth image has none), as gazebo_plugins fills them (a pixel's ray
-    through (width - 1) / 2)."""
+    ahead; NaN where the depth image has none; dense unless a point is NaN; the colour
+    bytes in the image's order), as gazebo_plugins fills them (a pixel's ray through
+    (width - 1) / 2). Images, depth images and clouds go out at every frame of the sensor;
+    the plugin's ``updateRate`` throttles the two infos alone. Noetic's
+    gazebo_ros_depth_camera publishes no info at all (its PublishCameraInfo is never called,
+    gazebo_plugins/src/gazebo_ros_depth_camera.cpp:477, gazebo_ros_pkgs issue #1174): that
+    fault is not copied, both plugins publish them as the openni one does."""
 
     PLUGIN_RATE_THROTTLES_FRAMES = False
 
@@ -314,6 +336,14 @@ class DepthCamera(Camera):
         self.cutoff = self.number("pointCloudCutoff", 0.4)
         self.cutoff_max = (self.number("pointCloudCutoffMax", 5.0)
                            if spec.filename == CUTOFF_MAX_PLUGIN else np.inf)
+        # sdformat's Get<bool> (gazebo_plugins/src/gazebo_ros_openni_kinect.cpp:110-114,
+        # gazebo_ros_depth_camera.cpp:136-140)
+        self.depth_16uc1 = self.flag("useDepth16UC1Format", False)
+        # each info goes out once at least 1/updateRate s of sensor time have passed since
+        # it last did (gazebo_plugins/src/gazebo_ros_camera_utils.cpp:679-686,
+        # gazebo_ros_openni_kinect.cpp:474-493), each on its own clock
+        self.info_throttle = Throttle(self.plugin_rate)
+        self.depth_info_throttle = Throttle(self.plugin_rate)
         self.depth_out = self.publisher("depthImageTopicName", "depth/image_raw", Image)
         self.depth_info_out = self.publisher("depthImageCameraInfoTopicName",
                                              "depth/camera_info", CameraInfo)
@@ -336,16 +366,33 @@ class DepthCamera(Camera):
             inside &= depth < self.cutoff_max
         return np.where(inside, depth, np.nan).astype(np.float32)
 
+    def depth_message(self, header_stamp, depth: np.ndarray) -> Image:
+        """The depth image as published: 32FC1 metres, or with useDepth16UC1Format 16UC1
+        millimetres (the 32-bit metres times 1000, the fraction dropped as C++'s conversion
+        does) and 0 where the 32-bit image has NaN (gazebo_plugins/src/
+        gazebo_ros_depth_camera.cpp:737-775, gazebo_ros_openni_kinect.cpp:429-468). A depth
+        of MAX_DEPTH_16UC1 mm or more (nothing seen: +inf) does not fit 16 bits, where
+        C++'s conversion is undefined; here it is 0, REP 118's "no reading"."""
+        metres = self.depth_image(depth)
+        if not self.depth_16uc1:
+            return self.image(header_stamp, metres[:, :, None], "32FC1")
+        millimetres = np.floor(metres.astype(np.float64) * MILLIMETRES_PER_METRE)
+        valid = np.isfinite(millimetres) & (millimetres < MAX_DEPTH_16UC1)
+        fixed = np.where(valid, millimetres, 0.0).astype(np.uint16)
+        return self.image(header_stamp, fixed[:, :, None], "16UC1")
+
     def points(self, header_stamp, pixels: np.ndarray, depth: np.ndarray) -> PointCloud2:
         metres = self.depth_image(depth)
         cloud = np.zeros((self.view.height, self.view.width), dtype=POINT_XYZRGB)
         cloud["x"], cloud["y"], cloud["z"] = self.ray_x * metres, self.ray_y * metres, metres
+        # the rgb field's first three bytes are the published image's pixel bytes in their
+        # order (a mono pixel thrice), the fourth 0 (gazebo_plugins/src/
+        # gazebo_ros_depth_camera.cpp:692-713, gazebo_ros_openni_kinect.cpp:379-400): an
+        # R8G8B8 camera's cloud has red in the lowest byte, where PCL reads blue
         rgb = pixels if pixels.shape[2] == 3 else np.repeat(pixels, 3, axis=2)
-        if self.view.encoding == "bgr8":
-            rgb = rgb[:, :, ::-1]
-        packed = (rgb[:, :, 0].astype(np.uint32) << 16) | (rgb[:, :, 1].astype(np.uint32) << 8) \
-            | rgb[:, :, 2].astype(np.uint32)
-        cloud["rgb"] = packed.view(np.float32)
+        colour = np.zeros((self.view.height, self.view.width, 4), dtype=np.uint8)
+        colour[:, :, :3] = rgb
+        cloud["rgb"] = colour.view(np.float32)[:, :, 0]
         message = PointCloud2()
         message.header.stamp, message.header.frame_id = header_stamp, self.frame_id
         message.height, message.width = cloud.shape
@@ -354,17 +401,24 @@ class DepthCamera(Camera):
         message.is_bigendian = False
         message.point_step = POINT_XYZRGB.itemsize
         message.row_step = POINT_XYZRGB.itemsize * cloud.shape[1]
-        message.is_dense = False
+        # true unless a point is NaN, cut off (gazebo_plugins/src/
+        # gazebo_ros_depth_camera.cpp:641, :684; gazebo_ros_openni_kinect.cpp:333, :375)
+        message.is_dense = not bool(np.isnan(metres).any())
         message.data = cloud.tobytes()
         return message
 
-    def publish(self, header_stamp, pixels: np.ndarray, depth: np.ndarray) -> None:
-        super().publish(header_stamp, pixels, depth)
-        self.depth_out.publish(self.image(header_stamp, self.depth_image(depth)[:, :, None],
-                                          "32FC1"))
-        self.depth_info_out.publish(self.info)
-        if self.context.bus.listened(self.points_out):
+    def publish(self, now_ns: int, pixels: np.ndarray, depth: np.ndarray) -> None:
+        header_stamp = stamp(now_ns)
+        listened = self.context.bus.listened
+        self.image_out.publish(self.image(header_stamp, pixels, self.view.encoding))
+        self.depth_out.publish(self.depth_message(header_stamp, depth))
+        if listened(self.points_out):
             self.points_out.publish(self.points(header_stamp, pixels, depth))
+        for out, throttle in ((self.info_out, self.info_throttle),
+                              (self.depth_info_out, self.depth_info_throttle)):
+            if listened(out) and throttle.ready(now_ns):
+                throttle.mark(now_ns)
+                out.publish(self.info_message(header_stamp))
 
 
 @dataclasses.dataclass
