@@ -6,6 +6,7 @@ states still go out (:118-124, :167-171, :272-274); the twist's covariance is ne
 getParameterBoolean keep their default for a text that is not true, false, 1 or 0, any case
 (gazebo_plugins/src/gazebo_ros_utils.cpp:92-123); the wheels' joint_states carry names and
 positions only (:199-218). Checked by what arrives on the topics, in simulated time."""
+import pybullet as pb
 import pytest
 from geometry_msgs.msg import Twist
 
@@ -140,3 +141,26 @@ def test_wheel_joint_states_carry_names_and_positions_only(world, bus, diff_bot_
         assert list(message.position) == positions[message.header.stamp.to_nsec()]
         assert message.position[0] != 0.0
         assert list(message.velocity) == [] and list(message.effort) == []
+
+
+def test_the_wheel_tf_names_the_lumped_parent_and_gives_the_pose_in_the_model(world, bus,
+                                                                            diff_bot_xml):
+    """gazebo_plugins/src/gazebo_ros_diff_drive.cpp:225-231: the frame is the joint's parent
+    link as Gazebo has it after lumping fixed joints (the test robot's base_link, fixed
+    0.08 m above base_footprint, is lumped into base_footprint), the pose the wheel link's
+    RelativePose, relative to the model (the root link base_footprint). Checked against
+    pybullet's poses of the wheel and of the root link. Before: parent base_link, the pose
+    relative to base_link (z -0.03 instead of 0.05)."""
+    drive(world, bus, bot(diff_bot_xml, "<publishWheelTF>true</publishWheelTF>"), 0.3)
+    robot = world.model("bot").robot
+    model_inverse = pb.invertTransform(*robot.base_pose())
+    for wheel in ("left_wheel", "right_wheel"):
+        transform = transforms_to(bus, wheel)[-1]
+        assert transform.header.frame_id == "base_footprint"
+        position, orientation = pb.multiplyTransforms(*model_inverse, *robot.link_pose(wheel))
+        translation, rotation = transform.transform.translation, transform.transform.rotation
+        assert (translation.x, translation.y, translation.z) == pytest.approx(position,
+                                                                              abs=1e-9)
+        assert (rotation.x, rotation.y, rotation.z, rotation.w) == pytest.approx(orientation,
+                                                                                 abs=1e-9)
+        assert translation.z == pytest.approx(0.05, abs=1e-3)

@@ -197,17 +197,24 @@ class DiffDrive(DriveBase):
                                      TWIST_COVARIANCE)
 
     def _wheel_transforms(self, time):
+        """Noetic's publishWheelTF (gazebo_plugins/src/gazebo_ros_diff_drive.cpp:220-241):
+        the frame is named after the joint's parent link as Gazebo has it, after sdformat
+        lumped the fixed joints (base_link fixed under base_footprint is base_footprint),
+        and the pose is the wheel link's RelativePose, which is relative to the model (the
+        root link's frame), not to that parent."""
         robot = self.context.robot
+        structure = self.context.structure
+        model_inverse = pb.invertTransform(*robot.base_pose())
         transforms = []
         for joint_name in (self.left_joint, self.right_joint):
             joint = robot.model.joints[joint_name]
-            parent = robot.link_pose(joint.parent)
+            parent = structure.body_of.get(joint.parent, joint.parent) if structure \
+                else joint.parent
             child = robot.link_pose(joint.child)
-            inverse = pb.invertTransform(*parent)
-            position, orientation = pb.multiplyTransforms(*inverse, *child)
+            position, orientation = pb.multiplyTransforms(*model_inverse, *child)
             transform = TransformStamped()
             transform.header.stamp = time
-            transform.header.frame_id = self.frame(joint.parent)
+            transform.header.frame_id = self.frame(parent)
             transform.child_frame_id = self.frame(joint.child)
             transform.transform.translation.x, transform.transform.translation.y, \
                 transform.transform.translation.z = position
