@@ -161,11 +161,18 @@ class Joint:
 
 @dataclass(frozen=True)
 class Transmission:
-    """A ros_control ``<transmission>``: which joints, and through which interface."""
+    """A ros_control ``<transmission>``: which joints, and through which interface.
+    ``type`` is the ``<type>`` text (None without the element, "" when empty),
+    ``joint_interfaces`` each joint's own ``<hardwareInterface>`` texts and ``actuators`` the
+    ``<actuator>`` elements' names (None without the attribute), for ros_control's
+    transmission parser, which skips a transmission lacking them."""
 
     name: str
     joints: Tuple[str, ...]
     hardware_interfaces: Tuple[str, ...]
+    type: Optional[str] = None
+    joint_interfaces: Tuple[Tuple[str, ...], ...] = ()
+    actuators: Tuple[Optional[str], ...] = ()
 
 
 @dataclass
@@ -491,11 +498,16 @@ def _joint(joint, source: str) -> Joint:
 
 
 def _transmission(element: ET.Element) -> Transmission:
-    joints, interfaces = [], []
+    joints, interfaces, per_joint = [], [], []
     for joint in element.findall("joint"):
         joints.append(joint.get("name", ""))
-        interfaces.extend(h.text.strip() for h in joint.findall("hardwareInterface") if h.text)
-    return Transmission(element.get("name", ""), tuple(joints), tuple(interfaces))
+        own = tuple(h.text.strip() for h in joint.findall("hardwareInterface") if h.text)
+        interfaces.extend(own)
+        per_joint.append(own)
+    kind = element.find("type")
+    return Transmission(element.get("name", ""), tuple(joints), tuple(interfaces),
+                        None if kind is None else (kind.text or "").strip(), tuple(per_joint),
+                        tuple(a.get("name") for a in element.findall("actuator")))
 
 
 def _tree(links: Dict[str, Link], joint_list: Iterable[Joint], source: str) -> Dict[str, Joint]:

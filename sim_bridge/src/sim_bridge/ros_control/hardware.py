@@ -45,7 +45,7 @@ from __future__ import annotations
 import math
 import sys
 from dataclasses import dataclass
-from typing import Any, Dict, Iterable, List, Mapping, Optional
+from typing import Any, Dict, Iterable, List, Mapping, Optional, Tuple
 
 import numpy as np
 import pybullet as pb
@@ -69,12 +69,69 @@ NO_POSITION_LIMIT = sys.float_info.max
 DEFAULT_EFFORT = 1000.0
 
 
-def interface_of(name: str) -> str:
-    short = name.split("/")[-1]
+# the namespace DefaultRobotHWSim expects before an interface's name; the bare name is
+# accepted, with a deprecation warning (hw_sim:153-186)
+INTERFACE_PREFIX = "hardware_interface/"
+
+
+def interface_of(name: str, joint: str = "", warn=None) -> str:
+    """The command interface a ``<hardwareInterface>`` names: ``hardware_interface/<Name>``
+    or the bare ``<Name>`` (deprecated: warned), nothing else (hw_sim:153-186)."""
+    short = name[len(INTERFACE_PREFIX):] if name.startswith(INTERFACE_PREFIX) else name
     if short not in INTERFACES:
-        raise PluginError(f"hardware interface '{name}' is not one of "
-                          f"{', '.join('hardware_interface/' + i for i in INTERFACES)}")
+        raise PluginError(f"No matching hardware interface found for '{name}' while loading "
+                          f"interfaces for {joint}: it must be one of "
+                          f"{', '.join(INTERFACE_PREFIX + i for i in INTERFACES)}")
+    if short == name and warn is not None:
+        warn(f"Deprecated syntax, please prepend '{INTERFACE_PREFIX}' to '{name}' within the "
+             f"<hardwareInterface> tag in joint '{joint}'.")
     return INTERFACES[short]
+
+
+def parsed_transmissions(transmissions, warn) -> List[Tuple[str, str, str]]:
+    """(transmission, joint, hardware interface) for each transmission ros_control's
+    TransmissionParser keeps (ros_control noetic-devel 633c374 transmission_interface/src/
+    transmission_parser.cpp:57-113) and DefaultRobotHWSim takes (hw_sim:88-141): a
+    ``<type>`` with text, joints with a ``<hardwareInterface>`` (others are dropped,
+    :155-175), an ``<actuator>`` with a name (:195-258), one joint only, its first
+    interface. The others are skipped, each named in a warning, as upstream logs them."""
+    kept = []
+    for transmission in transmissions:
+        name = transmission.name
+        if not name:  # :63-76
+            warn("No name attribute specified for transmission.")
+            continue
+        if transmission.type is None:  # :79-85
+            warn(f"No type element found in transmission '{name}'.")
+            continue
+        if not transmission.type:  # :86-91
+            warn(f"Skipping empty type element in transmission '{name}'.")
+            continue
+        joints = []
+        for joint, interfaces in zip(transmission.joints, transmission.joint_interfaces):
+            if not joint:  # :134-147
+                warn("Empty name attribute specified for joint.")
+            elif not interfaces:  # :170-175
+                warn(f"No valid hardware interface element found in joint '{joint}'.")
+            else:
+                joints.append((joint, interfaces))
+        if not joints:  # :95-100
+            warn(f"Failed to load joints for transmission '{name}'.")
+            continue
+        if None in transmission.actuators or not any(transmission.actuators):  # :103-108
+            warn(f"Failed to load actuators for transmission '{name}'.")
+            continue
+        if len(joints) > 1:  # hw_sim:97-103
+            warn(f"Transmission {name} has more than one joint. Currently the default robot "
+                 "hardware simulation interface only supports one.")
+            continue
+        joint, interfaces = joints[0]
+        if len(interfaces) > 1:  # hw_sim:124-130
+            warn(f"Joint {joint} of transmission {name} specifies multiple hardware "
+                 "interfaces. Currently the default robot hardware simulation interface only "
+                 "supports one. Using the first entry")
+        kept.append((name, joint, interfaces[0]))
+    return kept
 
 
 @dataclass
@@ -245,27 +302,23 @@ class RobotHardware:
         self.body = robot.id
         self.step_size = context.step_size
         self.joints: Dict[str, JointHandle] = {}
-        for transmission in transmissions:
-            if not transmission.hardware_interfaces:
-                raise PluginError(f"transmission '{transmission.name}' names no "
-                                  "hardwareInterface")
-            interface = interface_of(transmission.hardware_interfaces[0])
-            for joint in transmission.joints:
-                if joint not in robot.joint_index:
-                    raise PluginError(f"transmission '{transmission.name}' names joint "
-                                      f"'{joint}', which model '{context.model_name}' does not have")
-                description = robot.model.joints[joint]
-                limits = self._limits(context.bus, namespace, description, interface)
-                effort = (limits.max_effort if limits is not None and limits.has_effort_limits
-                          else UNLIMITED)  # hw_sim:404, :453-454
-                handle = JointHandle(joint, robot.joint_index[joint], interface,
-                                     description.type, effort, limits)
-                if limits is not None and limits.has_position_limits:  # hw_sim:448-452
-                    handle.lower_limit = limits.min_position
-                    handle.upper_limit = limits.max_position
-                if interface != "effort":
-                    handle.pid = self._pid_gains(context.bus, namespace, joint)
-                self.joints[joint] = handle
+        for transmission, joint, name in parsed_transmissions(transmissions, context.bus.warn):
+            interface = interface_of(name, joint, context.bus.warn)
+            if joint not in robot.joint_index:  # hw_sim:191-197
+                raise PluginError(f"transmission '{transmission}' names joint '{joint}', which "
+                                  f"model '{context.model_name}' does not have")
+            description = robot.model.joints[joint]
+            limits = self._limits(context.bus, namespace, description, interface)
+            effort = (limits.max_effort if limits is not None and limits.has_effort_limits
+                      else UNLIMITED)  # hw_sim:404, :453-454
+            handle = JointHandle(joint, robot.joint_index[joint], interface,
+                                 description.type, effort, limits)
+            if limits is not None and limits.has_position_limits:  # hw_sim:448-452
+                handle.lower_limit = limits.min_position
+                handle.upper_limit = limits.max_position
+            if interface != "effort":
+                handle.pid = self._pid_gains(context.bus, namespace, joint)
+            self.joints[joint] = handle
         self.names: List[str] = list(self.joints)
         self._indices = [self.joints[n].index for n in self.names]
         self.positions = np.zeros(len(self.names))
@@ -330,7 +383,9 @@ class RobotHardware:
         self.write(self.step_size)
 
     def read(self) -> None:
-        states = pb.getJointStates(self.body, self._indices, physicsClientId=self.client)
+        # pybullet answers None for no joints (every transmission skipped)
+        states = pb.getJointStates(self.body, self._indices,
+                                   physicsClientId=self.client) if self._indices else []
         self.positions = np.array([s[0] for s in states])
         self.velocities = np.array([s[1] for s in states])
         # an effort joint's effort is the force its last command applied (readSim's
