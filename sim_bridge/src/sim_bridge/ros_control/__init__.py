@@ -100,6 +100,12 @@ class Loaded:
     state: str = "initialized"  # then "running" or "stopped", as controller_manager says
 
 
+def _duration(seconds: float) -> str:
+    """A period as ros::Duration prints it: seconds, a point, nine digits of nanoseconds."""
+    nanoseconds = int(round(seconds * 1e9))
+    return f"{nanoseconds // 1_000_000_000}.{nanoseconds % 1_000_000_000:09d}"
+
+
 class RosControl(Plugin):
     # gazebo_ros_control's own default: the model's name (see Plugin); an empty tag is the
     # top level. A robot spawned by spawn_model at the top level has "/" from the spawn
@@ -123,6 +129,13 @@ class RosControl(Plugin):
             context.bus.warn(f"plugin '{spec.name}': eStopTopic '{self.param('eStopTopic')}' "
                              "is not emulated: nothing stops the controllers on it")
         period = self.number("controlPeriod", context.step_size)
+        # plugin:126-141: a period shorter than the step is an error (the controllers update
+        # every step), a longer one a warning (they update at that period)
+        if self.param("controlPeriod") is not None and period != context.step_size:
+            log = context.bus.warn
+            how = "faster" if period < context.step_size else "slower"
+            log(f"Desired controller update period ({_duration(period)} s) is {how} than the "
+                f"gazebo simulation period ({_duration(context.step_size)} s).")
         self.rate = Rate(1.0 / period if period > context.step_size else 0.0)
         self.period = max(period, context.step_size)
         self.io = ControllerIO(context.bus, self.namespace, context.robot)
@@ -247,14 +260,16 @@ class RosControl(Plugin):
 
     # --- the step ---------------------------------------------------------------------------
     def before_step(self, now_ns: int) -> None:
+        """Update (plugin:211-258): when the control period has elapsed, readSim and the
+        controllers' update; every step, writeSim with the commands they last gave (a
+        torque lasts one pybullet step, as Gazebo's SetForce does)."""
         self.now_ns = now_ns
-        if not self.rate.due(now_ns):
-            return
-        self.hardware.read()
-        for loaded in self.controllers.values():
-            if loaded.state == "running":
-                loaded.controller.update(now_ns, self.period)
-        self.hardware.write(self.period)
+        if self.rate.due(now_ns):
+            self.hardware.read()
+            for loaded in self.controllers.values():
+                if loaded.state == "running":
+                    loaded.controller.update(now_ns, self.period)
+        self.hardware.write(self.context.step_size)
 
     def reset(self, now_ns: int) -> None:
         """After reset_world, reset_simulation or new joint positions: as Noetic's Reset
