@@ -183,3 +183,44 @@ def test_limits_without_a_velocity_limit_refuse_the_controls_naming_the_joint():
                "specification." in w for w in bus.warnings), bus.warnings
     assert "spinner" in world.models
     world.close()
+
+
+def test_joint_limits_parameters_replace_the_urdf_position_limits():
+    """joint_limits/<joint>/has_position_limits with min_position and max_position replace
+    the URDF's (JLI joint_limits_rosparam.h:97-114): [-0.5, 0.5] stops a 1 rad position
+    command at 0.5 (the URDF allows ±3; PositionJointSaturationHandle, JLI
+    joint_limits_interface.h:91-112)."""
+    limits = {"/spinner/joint_limits/spin": {"has_position_limits": True, "min_position": -0.5,
+                                             "max_position": 0.5}}
+    world, bus, model = spinner("position", params=limits, joint_type="revolute",
+                                limit='<limit lower="-3" upper="3" effort="50" velocity="2.0"/>')
+    command(bus, 1.0)
+    run(world, 1.5)
+    assert spin(model)[0] == pytest.approx(0.5, abs=1e-3)
+    world.close()
+
+
+def test_joint_limits_max_effort_replaces_the_urdf_effort():
+    """joint_limits/<joint>/has_effort_limits, max_effort (JLI joint_limits_rosparam.h:
+    155-166) is the velocity motor's fmax (hw_sim:240, :453-454): 0.2 N m on a 2 kg m^2
+    flywheel is 0.1 rad/s^2, 0.1 rad/s after 1 s toward a 1 rad/s command (the URDF's 50
+    N m would reach it in 0.04 s)."""
+    limits = {"/spinner/joint_limits/spin": {"has_effort_limits": True, "max_effort": 0.2}}
+    world, bus, model = spinner("velocity", params=limits, izz=2.0)
+    command(bus, 1.0)
+    run(world, 1.0)
+    assert spin(model)[1] == pytest.approx(0.1, abs=0.005)
+    world.close()
+
+
+def test_joint_limits_jerk_limits_are_read_and_used_by_no_handle():
+    """has_jerk_limits, max_jerk are read (JLI joint_limits_rosparam.h:142-153) but no
+    saturation handle uses them (joint_limits_interface.h:91-112, :285-306, :425-455): a
+    velocity command is reached as without them."""
+    limits = {"/spinner/joint_limits/spin": {"has_velocity_limits": True, "max_velocity": 2.0,
+                                             "has_jerk_limits": True, "max_jerk": 0.001}}
+    world, bus, model = spinner("velocity", params=limits)
+    command(bus, 1.5)
+    run(world, 0.1)
+    assert spin(model)[1] == pytest.approx(1.5, abs=0.01)
+    world.close()

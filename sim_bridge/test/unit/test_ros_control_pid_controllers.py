@@ -58,15 +58,25 @@ def spinner(controller, joint_type="revolute", limit='<limit lower="-1" upper="1
             'velocity="10"/>', position=0.0, interface="effort", gains=None, axis="0 0 1"):
     """The world, the bus and the model at ``position``, ``controller`` (a type) running."""
     bus = RecordingBus({"/spinner/controller": {"type": controller, "joint": "spin",
-                                                "pid": gains or GAINS}})
+                                                "pid": gains or GAINS},
+                        "/spinner/joint_state_controller": {
+                            "type": "joint_state_controller/JointStateController",
+                            "publish_rate": 100}})
     world = World(bus, ray_threads=1)
     model = world.spawn_urdf("spinner", spinner_urdf(interface, joint_type, limit, axis),
                              joints={"spin": position})
-    assert bus.services[f"{MANAGER}/load_controller"](LoadControllerRequest("controller")).ok, \
-        bus.warnings
-    assert bus.services[f"{MANAGER}/switch_controller"](
-        SwitchControllerRequest(start_controllers=["controller"], strictness=2)).ok
+    for name in ("controller", "joint_state_controller"):
+        assert bus.services[f"{MANAGER}/load_controller"](LoadControllerRequest(name)).ok, \
+            bus.warnings
+    assert bus.services[f"{MANAGER}/switch_controller"](SwitchControllerRequest(
+        start_controllers=["controller", "joint_state_controller"], strictness=2)).ok
     return world, bus, model
+
+
+def effort(bus):
+    """The effort the joint was last given (joint_states: an effort joint's applied command,
+    hw_sim:281)."""
+    return bus.last("/spinner/joint_states").effort[0]
 
 
 def command(bus, value):
@@ -83,17 +93,20 @@ EFFORT_POSITION = "effort_controllers/JointPositionController"
 
 def test_a_command_beyond_the_urdf_limits_is_clamped_to_them():
     """enforceJointLimits (epc:253-267, applied each update, :179): a command of 3 rad on a
-    revolute joint limited to [-2, 1.5] is 1.5, and the state's set_point says so. Before, the
-    PID drove the rotor to 3.0 (pybullet does not stop a torque-driven joint at its limits)."""
+    revolute joint limited to [-2, 1.5] is 1.5, and the state's set_point says so: the rotor
+    rests at the limit with no effort. Before, the PID pushed it against the joint's stop
+    with p (3 - 1.5) = 30 N m."""
     world, bus, model = spinner(EFFORT_POSITION,
                                 limit='<limit lower="-2" upper="1.5" effort="50" velocity="10"/>')
     command(bus, 3.0)
     run(world, 3.0)
     assert spin(model)[0] == pytest.approx(1.5, abs=0.01)
+    assert abs(effort(bus)) < 0.1
     assert bus.last("/spinner/controller/state").set_point == 1.5
     command(bus, -5.0)
     run(world, 3.0)
     assert spin(model)[0] == pytest.approx(-2.0, abs=0.01)
+    assert abs(effort(bus)) < 0.1
     world.close()
 
 
@@ -110,6 +123,7 @@ def test_a_prismatic_joints_command_is_clamped_and_its_error_is_the_difference()
     command(bus, 0.8)
     run(world, 3.0)
     assert spin(model)[0] == pytest.approx(0.5, abs=0.005)
+    assert abs(effort(bus)) < 0.5  # before: p (0.8 - 0.5) = 30 N against the stop
     world.close()
 
 
@@ -189,21 +203,22 @@ def test_the_state_is_published_on_the_first_update_and_every_tenth():
 
 
 def test_the_group_position_controller_clamps_and_wraps_as_the_single_one():
-    """gpc:145-171: each joint's command clamped to its URDF limits, the error by joint type.
-    A command of 3 rad on [-2, 1.5] stops at 1.5 (before: 3.0)."""
+    """gpc:145-171: each joint's command clamped to its URDF limits, the error by joint type:
+    a continuous joint at 6.0 rad commanded to 0.1 rad settles at 0.1 + 2 pi (before: it
+    unwound to 0.1)."""
     bus = RecordingBus({"/spinner/controller": {
         "type": "effort_controllers/JointGroupPositionController", "joints": ["spin"],
         "spin": {"pid": GAINS}}})
     world = World(bus, ray_threads=1)
     model = world.spawn_urdf("spinner", spinner_urdf(
-        "effort", "revolute", '<limit lower="-2" upper="1.5" effort="50" velocity="10"/>'))
+        "effort", "continuous", '<limit effort="50" velocity="10"/>'), joints={"spin": 6.0})
     assert bus.services[f"{MANAGER}/load_controller"](LoadControllerRequest("controller")).ok, \
         bus.warnings
     assert bus.services[f"{MANAGER}/switch_controller"](
         SwitchControllerRequest(start_controllers=["controller"], strictness=2)).ok
-    bus.subscriptions["/spinner/controller/command"](Float64MultiArray(data=[3.0]))
+    bus.subscriptions["/spinner/controller/command"](Float64MultiArray(data=[0.1]))
     run(world, 3.0)
-    assert spin(model)[0] == pytest.approx(1.5, abs=0.01)
+    assert spin(model)[0] == pytest.approx(0.1 + 2 * math.pi, abs=0.01)
     world.close()
 
 
