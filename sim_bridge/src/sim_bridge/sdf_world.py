@@ -171,6 +171,10 @@ class ModelSpec:
     # its root link's pose in the model's frame ("" and None for a single body)
     urdf: str = ""
     urdf_root_pose: Optional[Pose6] = None
+    # where the model stood when Gazebo made its <plane> collisions: a plane is fixed at its
+    # collision's height then (before a world's <state> moves the model) and never moved
+    # again (World._plane_placement); None: the model's pose when its bodies are first made
+    plane_pose: Optional[Pose6] = None
 
 
 @dataclass
@@ -635,10 +639,16 @@ def _apply_state(world: ET.Element, spec: WorldSpec, source: str) -> None:
     """A world saved from Gazebo keeps where its models are in ``<state>``, which Gazebo
     applies when it loads the world (Husky's playpen turns a barrier there: without it
     the robot spawned on top of it): each ``<state><model name><pose>`` places the model
-    of that name. Links' poses and velocities in the state are not applied."""
+    of that name. Links' poses and velocities in the state are not applied. Gazebo 11 makes
+    the world's collisions before it applies the state, so a model's planes stay where its
+    own ``<pose>`` put them (``ModelSpec.plane_pose``): inferred, not read in gazebo-classic's
+    source, from worlds that run there (Neobotix's workshop stands decals on their edges
+    at 1.25 m by its state; planes made there would lift every robot onto a floor at 1.25 m)."""
     models = {model.name: model for model in spec.models}
     for state in world.findall("state"):
         for element in state.findall("model"):
             model = models.get(element.get("name", ""))
             if model is not None and element.find("pose") is not None:
+                if model.plane_pose is None:
+                    model.plane_pose = model.pose
                 model.pose = _pose(element, f"<state> model '{model.name}'", source)

@@ -19,6 +19,7 @@ in a 40-object hall). Lasers do not ask pybullet: see :mod:`sim_bridge.ray_caste
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from typing import Any, Dict, List, Mapping, Optional, Sequence, Set, Tuple, Union
@@ -458,11 +459,17 @@ class World:
         touch them between steps (a multi-link body's links are re-posed every step)."""
         model.static_bodies = []
         model.primitives = []
+        if model.spec.plane_pose is None:
+            model.spec.plane_pose = model.spec.pose
         for link in model.spec.links:
             link_pose = compose6(model.spec.pose, link.pose)
             visuals = list(link.visuals)
             for shape in link.collisions:
                 pose = compose6(link_pose, shape.pose)
+                if shape.kind == "plane":  # its body's z axis is the normal
+                    made_at = compose6(compose6(model.spec.plane_pose, link.pose), shape.pose)
+                    pose = self._plane_placement(made_at, shape.normal)
+                    shape = dataclasses.replace(shape, normal=(0.0, 0.0, 1.0))
                 # a link's only visual rides on its first collision body: half the bodies
                 visual = -1
                 if len(link.visuals) == 1 and visuals:
@@ -483,6 +490,30 @@ class World:
                 pose = compose6(link_pose, shape.pose)
                 model.static_bodies.append(self._fixed_body(-1, self._make_shape(shape, False),
                                                             pose))
+
+    @staticmethod
+    def _plane_placement(pose: Sequence[float], normal: Sequence[float]) -> Tuple[float, ...]:
+        """Where a plane collision lies, as Gazebo 11's ODE makes it (gazebo-classic
+        0c6796e gazebo/physics/ode/ODEPlaneShape.cc:33-47, CreatePlane): the SDF's
+        ``<normal>`` taken in world axes, whatever the pose's rotation, at the collision's
+        world height (``dCreatePlane(n, z)``, the plane n.x = z/|n| once ODE makes n a unit
+        vector), and never moved after (ODE's planes cannot be placed). The SDF spec puts
+        the normal in the collision's frame (sdformat sdf9 66a8c21 sdf/1.6/plane_shape.sdf:3-7);
+        Gazebo does not, and the worlds that run there rely on it (gazebo-classic issue
+        2274): a wall decal, a plane stood on its edge, is a second floor there, not a
+        half-space that throws out what stands in front of it. The pose returned: the
+        plane's point nearest the origin, turned so that its z axis is the normal (the
+        frame pybullet's plane and the lasers' plane primitive take)."""
+        direction = np.asarray(normal, dtype=float)
+        length = float(np.linalg.norm(direction))
+        direction = direction / length
+        origin = direction * (pose[2] / length)
+        # any frame whose z axis is the normal: x from the world axis least along it
+        helper = np.eye(3)[int(np.argmin(np.abs(direction)))]
+        x_axis = np.cross(helper, direction)
+        x_axis /= np.linalg.norm(x_axis)
+        rotation = np.column_stack([x_axis, np.cross(direction, x_axis), direction])
+        return (*origin.tolist(), *matrix_rpy(rotation))
 
     def _fixed_body(self, collision: int, visual: int, pose: Sequence[float]) -> int:
         position, orientation = pose6_to_position_quaternion(pose)
