@@ -7,7 +7,11 @@ gazebo_ros_control's default), ``controlPeriod`` (seconds; default the physics s
 ``robotParam`` (accepted; the spawned model's own description is used; ``legacyModeNS``,
 which only Kinetic's plugin read, is a verbose note: sim_bridge.plugins.RETIRED_TAGS),
 ``robotSimType`` (DefaultRobotHWSim's behaviour; another class is named in a warning),
-``eStopTopic`` (named in a warning: the emergency stop is not emulated).
+``eStopTopic`` (a ``std_msgs/Bool`` in the robot's namespace: while true, effort and
+velocity commands are 0 and position joints hold where they were when it came; on release
+the running controllers are stopped and started again, gazebo_ros_control_plugin.cpp:155-159,
+:222-251, :307-310, default_robot_hw_sim.cpp:287-300, :315, :359-375; controller_manager.cpp:
+70-78).
 
 Joints are the ones with a ``<transmission>`` (see :mod:`.hardware`). Controllers are
 configured on the parameter server, under ``<namespace>/<name>`` with a ``type``, and loaded,
@@ -23,6 +27,7 @@ from dataclasses import dataclass
 from typing import Dict
 
 from controller_manager_msgs.msg import ControllerState, HardwareInterfaceResources
+from std_msgs.msg import Bool
 from controller_manager_msgs.srv import (ListControllers, ListControllersResponse,
                                          ListControllerTypes, ListControllerTypesResponse,
                                          LoadController, LoadControllerResponse,
@@ -125,9 +130,12 @@ class RosControl(Plugin):
         if sim_type.strip() != DEFAULT_SIM_TYPE:
             context.bus.warn(f"plugin '{spec.name}': robotSimType '{sim_type}' is not emulated; "
                              f"{DEFAULT_SIM_TYPE}'s behaviour is used")
-        if self.param("eStopTopic"):
-            context.bus.warn(f"plugin '{spec.name}': eStopTopic '{self.param('eStopTopic')}' "
-                             "is not emulated: nothing stops the controllers on it")
+        # the emergency stop (plugin:155-159, :307-310): set by the topic, acted on each step
+        self.e_stop = False
+        self._e_stopped_last_update = False
+        e_stop_topic = self.param("eStopTopic")
+        if e_stop_topic:
+            context.bus.subscriber(self.topic(e_stop_topic.strip()), Bool, self._on_e_stop)
         period = self.number("controlPeriod", context.step_size)
         # plugin:126-141: a period shorter than the step is an error (the controllers update
         # every step), a longer one a warning (they update at that period)
@@ -259,17 +267,28 @@ class RosControl(Plugin):
         return ReloadControllerLibrariesResponse(True)
 
     # --- the step ---------------------------------------------------------------------------
+    def _on_e_stop(self, message) -> None:
+        self.e_stop = bool(message.data)
+
     def before_step(self, now_ns: int) -> None:
         """Update (plugin:211-258): when the control period has elapsed, readSim and the
-        controllers' update; every step, writeSim with the commands they last gave (a
-        torque lasts one pybullet step, as Gazebo's SetForce does)."""
+        controllers' update (the running ones stopped and started again first when the
+        emergency stop was released since the last update, plugin:233-251, CM:70-78);
+        every step, writeSim with the commands they last gave (a torque lasts one pybullet
+        step, as Gazebo's SetForce does) or the emergency stop's."""
         self.now_ns = now_ns
+        e_stop = self.e_stop
         if self.rate.due(now_ns):
             self.hardware.read()
+            released = self._e_stopped_last_update and not e_stop
+            self._e_stopped_last_update = e_stop
             for loaded in self.controllers.values():
                 if loaded.state == "running":
+                    if released:
+                        loaded.controller.stop(now_ns)
+                        loaded.controller.start(now_ns)
                     loaded.controller.update(now_ns, self.period)
-        self.hardware.write(self.context.step_size)
+        self.hardware.write(self.context.step_size, e_stop=e_stop)
 
     def reset(self, now_ns: int) -> None:
         """After reset_world, reset_simulation or new joint positions: as Noetic's Reset

@@ -38,7 +38,11 @@ gazebo_ros_control/src/default_robot_hw_sim.cpp; "hw_sim" below), with its joint
   (gazebo_ros_pkgs issue #93, open, labelled bug) that the design does not copy
   (sim_bridge/doc/ros_control.md, "Where sim_bridge differs on purpose").
 
-Not read: ``<safety_controller>`` soft limits (hw_sim:420-421, :456-482), ``eStopTopic``.
+- the emergency stop (:meth:`RobotHardware.write` with ``e_stop``, hw_sim:287-300, :315,
+  :359-375): position commands are the positions read when it began, efforts 0, velocity
+  commands 0 (a velocity PID's error is -velocity).
+
+Not read: ``<safety_controller>`` soft limits (hw_sim:420-421, :456-482).
 """
 from __future__ import annotations
 
@@ -236,14 +240,16 @@ class JointHandle:
     # registerJointLimits' lower and upper limits, for the PID's error (hw_sim:401-403, :448-452)
     lower_limit: float = -NO_POSITION_LIMIT
     upper_limit: float = NO_POSITION_LIMIT
-    # the effort the last write applied (SetForce), what readSim's GetForce(0) reads back
+    # the effort the last write applied (SetForce: an effort joint's saturated command, 0
+    # during the emergency stop; a PID joint's), what readSim's GetForce(0) reads back
     applied_effort: float = 0.0
 
-    def pid_effort(self, position: float, velocity: float, period: float) -> float:
+    def pid_effort(self, position: float, velocity: float, period: float,
+                   e_stop: bool = False) -> float:
         """POSITION_PID and VELOCITY_PID (hw_sim:328-353, :370-380): the PID's effort toward
         the (saturated) command, clamped to ±the effort limit."""
         if self.interface == "velocity":
-            error = self.command - velocity
+            error = -velocity if e_stop else self.command - velocity
         elif self.joint_type == "revolute":
             error = shortest_angular_distance_with_limits(position, self.command,
                                                           self.lower_limit, self.upper_limit)
@@ -324,6 +330,8 @@ class RobotHardware:
         self.positions = np.zeros(len(self.names))
         self.velocities = np.zeros(len(self.names))
         self.efforts = np.zeros(len(self.names))
+        # the positions the emergency stop holds, while it is on
+        self._held_positions: Optional[List[float]] = None
         self.hold()
 
     @staticmethod
@@ -392,23 +400,32 @@ class RobotHardware:
         # GetForce(0) after writeSim's SetForce, hw_sim:281, :316): pybullet's applied
         # torque of a torque-controlled joint is the braking motor of its URDF friction
         # a PID-driven joint's, likewise, the effort its PID applied
-        self.efforts = np.array([h.command if h.interface == "effort" else
-                                 h.applied_effort if h.pid is not None else s[3]
-                                 for s, h in zip(states, self.joints.values())])
+        self.efforts = np.array([h.applied_effort if h.interface == "effort" or h.pid is not None
+                                 else s[3] for s, h in zip(states, self.joints.values())])
 
     def state(self, joint: str):
         i = self.names.index(joint)
         return self.positions[i], self.velocities[i], self.efforts[i]
 
-    def write(self, period: Optional[float] = None) -> None:
-        """writeSim (hw_sim:285-383): the limits, then the commands to pybullet."""
+    def write(self, period: Optional[float] = None, e_stop: bool = False) -> None:
+        """writeSim (hw_sim:285-383): the limits, then the commands to pybullet; with
+        ``e_stop``, position joints held at the positions read when it began (hw_sim:287-300),
+        efforts and velocities 0 (:315, :359-375)."""
         period = self.step_size if period is None else period
+        if e_stop and self._held_positions is None:  # last_joint_position_command_ (:290-294)
+            self._held_positions = [float(p) for p in self.positions]
+        elif not e_stop:
+            self._held_positions = None
         by_mode: Dict[str, List[JointHandle]] = {}
         for k, handle in enumerate(self.joints.values()):
             position, velocity = float(self.positions[k]), float(self.velocities[k])
+            if e_stop and handle.interface == "position":
+                handle.command = self._held_positions[k]
             handle.saturate(position, velocity, period)
+            if handle.interface == "effort":  # SetForce(0) during the stop (hw_sim:315)
+                handle.applied_effort = 0.0 if e_stop else handle.command
             if handle.pid is not None:
-                handle.applied_effort = handle.pid_effort(position, velocity, period)
+                handle.applied_effort = handle.pid_effort(position, velocity, period, e_stop)
                 by_mode.setdefault("pid", []).append(handle)
             else:
                 by_mode.setdefault(handle.interface, []).append(handle)
@@ -426,9 +443,9 @@ class RobotHardware:
             elif interface == "velocity":  # fmax = the effort limit (hw_sim:240, :363)
                 pb.setJointMotorControlArray(
                     self.body, indices, pb.VELOCITY_CONTROL,
-                    targetVelocities=[h.command for h in handles],
+                    targetVelocities=[0.0 if e_stop else h.command for h in handles],
                     forces=[h.effort_limit for h in handles], physicsClientId=self.client)
             else:  # SetForce (hw_sim:313-318)
                 pb.setJointMotorControlArray(
                     self.body, indices, pb.TORQUE_CONTROL,
-                    forces=[h.command for h in handles], physicsClientId=self.client)
+                    forces=[h.applied_effort for h in handles], physicsClientId=self.client)
