@@ -51,6 +51,10 @@ from sim_bridge.ros_control.controller_base import Controller
 from sim_bridge.ros_control.pid import Pid
 from sim_bridge.trajectory import Trajectory, Waypoint
 
+# initJointTrajectory's refusal of a point whose sizes do not agree (init:395-397, :477-488),
+# the goal's error_string (impl:548-552, :630-634)
+SIZE_MISMATCH = "Size mismatch in trajectory point position, velocity or acceleration data."
+
 Result = FollowJointTrajectoryResult
 
 
@@ -186,10 +190,8 @@ class JointTrajectoryController(Controller):
                 continue
             for field in ("positions", "velocities", "accelerations"):
                 values = getattr(point, field)
-                if values and len(values) != len(names):
-                    raise TrajectoryRefused(Result.INVALID_GOAL,
-                                            f"point {number} has {len(values)} {field} for "
-                                            f"{len(names)} joints")
+                if values and len(values) != len(names):  # init:395-397, :477-488
+                    raise TrajectoryRefused(Result.INVALID_GOAL, SIZE_MISMATCH)
                 if values and not all(math.isfinite(v) for v in values):
                     raise TrajectoryRefused(Result.INVALID_GOAL,
                                             f"point {number} has a {field[:-1]} that is not finite")
