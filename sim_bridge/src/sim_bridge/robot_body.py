@@ -458,6 +458,16 @@ class RobotBody:
             pb.applyExternalForce(self.id, index, force, com, pb.WORLD_FRAME,
                                   physicsClientId=self.client)
 
+    def set_gravity(self, indices: Sequence[int], on: bool) -> None:
+        """Gravity on or off for some links (set_link_properties' gravity_mode); every
+        weightless link's mass is read again, as it may have been changed."""
+        weightless = {index for index, _ in self.weightless_links} - set(indices)
+        if not on:
+            weightless |= set(indices)
+        self.weightless_links = [
+            (index, pb.getDynamicsInfo(self.id, index, physicsClientId=self.client)[0])
+            for index in sorted(weightless)]
+
     # --- reading ------------------------------------------------------------------
     def link_pose(self, link: str) -> Tuple[Vec3, Quat]:
         """World pose of a URDF link frame."""

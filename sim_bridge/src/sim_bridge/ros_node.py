@@ -4,7 +4,9 @@ The node is named ``gazebo`` by the launch files, so its services are gazebo_ros
 ``/gazebo/spawn_urdf_model``, ``spawn_sdf_model``, ``delete_model``, ``get_model_state``,
 ``set_model_state``, ``set_model_configuration``, ``get_world_properties``,
 ``get_model_properties``, ``get_link_state``, ``set_link_state``,
-``get_physics_properties``, ``set_physics_properties``, ``apply_body_wrench``,
+``get_joint_properties``, ``set_joint_properties``, ``get_link_properties``,
+``set_link_properties``, ``get_light_properties``, ``set_light_properties``,
+``delete_light``, ``get_physics_properties``, ``set_physics_properties``, ``apply_body_wrench``,
 ``clear_body_wrenches``, ``apply_joint_effort``, ``clear_joint_forces``,
 ``pause_physics``, ``unpause_physics``, ``reset_simulation``, ``reset_world``; topics
 ``/clock``, ``/gazebo/model_states`` and ``/gazebo/link_states`` (the two published at
@@ -42,6 +44,7 @@ import numpy as np
 import pybullet as pb
 import rospy
 from geometry_msgs.msg import Pose, Twist
+from std_msgs.msg import ColorRGBA
 from std_srvs.srv import Empty, EmptyResponse
 from tf2_msgs.msg import TFMessage
 
@@ -55,7 +58,10 @@ from sim_bridge.sdf_world import SdfError, load_world, parse_model
 from sim_bridge.stop_signals import StopSignals, shut_rospy_down
 from gazebo_msgs.srv import (ApplyBodyWrench, ApplyBodyWrenchResponse, ApplyJointEffort,
                             ApplyJointEffortResponse, BodyRequest, BodyRequestResponse,
-                            DeleteModel, DeleteModelResponse, GetLinkState,
+                            DeleteLight, DeleteLightResponse, DeleteModel,
+                            DeleteModelResponse, GetLightProperties,
+                            GetLightPropertiesResponse, GetLinkProperties,
+                            GetLinkPropertiesResponse, GetLinkState,
                             GetJointProperties, GetJointPropertiesResponse,
                             GetLinkStateResponse, GetModelProperties,
                             GetModelPropertiesResponse, GetModelState, GetModelStateResponse,
@@ -63,6 +69,8 @@ from gazebo_msgs.srv import (ApplyBodyWrench, ApplyBodyWrenchResponse, ApplyJoin
                             GetWorldProperties, GetWorldPropertiesResponse, JointRequest,
                             JointRequestResponse, SetLinkState, SetLinkStateResponse,
                             SetJointProperties, SetJointPropertiesResponse,
+                            SetLightProperties, SetLightPropertiesResponse,
+                            SetLinkProperties, SetLinkPropertiesResponse,
                             SetModelConfiguration, SetModelConfigurationResponse, SetModelState,
                             SetModelStateResponse, SetPhysicsProperties,
                             SetPhysicsPropertiesResponse, SpawnModel, SpawnModelResponse)
@@ -315,6 +323,10 @@ def _vector(message) -> tuple:
     return (message.x, message.y, message.z)
 
 
+def _colour(message) -> tuple:
+    return (message.r, message.g, message.b, message.a)
+
+
 def _relative(position, orientation, linear, angular, frame):
     """A pose and twist in the world seen from ``frame`` = (position, orientation, linear,
     angular) of the frame: gazebo_ros's get_*_state (the twist is relative to the frame's
@@ -408,6 +420,11 @@ class SimBridgeNode:
             ("set_link_state", SetLinkState, self._set_link_state),
             ("get_joint_properties", GetJointProperties, self._get_joint_properties),
             ("set_joint_properties", SetJointProperties, self._set_joint_properties),
+            ("get_link_properties", GetLinkProperties, self._get_link_properties),
+            ("set_link_properties", SetLinkProperties, self._set_link_properties),
+            ("get_light_properties", GetLightProperties, self._get_light_properties),
+            ("set_light_properties", SetLightProperties, self._set_light_properties),
+            ("delete_light", DeleteLight, self._delete_light),
             ("get_physics_properties", GetPhysicsProperties, self._get_physics),
             ("set_physics_properties", SetPhysicsProperties, self._set_physics),
             ("apply_body_wrench", ApplyBodyWrench, self._apply_wrench),
@@ -602,6 +619,48 @@ class SimBridgeNode:
                           f"'{request.joint_name}' (the solver is pybullet's, not ODE); "
                           "damping, hiStop, loStop, fmax and vel are")
         return SetJointPropertiesResponse(True, "SetJointProperties: properties set")
+
+    def _get_link_properties(self, request):
+        properties = self.world.link_properties(request.link_name)
+        ixx, ixy, ixz, iyy, iyz, izz = properties.inertia
+        response = GetLinkPropertiesResponse(
+            gravity_mode=properties.gravity_mode, mass=properties.mass, ixx=ixx, ixy=ixy,
+            ixz=ixz, iyy=iyy, iyz=iyz, izz=izz, success=True,
+            status_message="GetLinkProperties: got properties")
+        # the centre of mass in the link's frame; its orientation the identity, as Noetic
+        # (gazebo_ros_api_plugin.cpp:1218-1224)
+        _fill_pose(response.com, properties.com, (0.0, 0.0, 0.0, 1.0))
+        return response
+
+    def _set_link_properties(self, request):
+        # com's orientation is not read, as Noetic's (:1419-1420)
+        self.world.set_link_properties(
+            request.link_name, _vector(request.com.position), request.gravity_mode,
+            request.mass, (request.ixx, request.ixy, request.ixz, request.iyy, request.iyz,
+                           request.izz))
+        return SetLinkPropertiesResponse(True, "SetLinkProperties: properties set")
+
+    def _get_light_properties(self, request):
+        light = self.world.light(request.light_name)
+        # Noetic's success leaves status_message empty (:1340)
+        return GetLightPropertiesResponse(
+            diffuse=ColorRGBA(*light.diffuse), attenuation_constant=light.attenuation_constant,
+            attenuation_linear=light.attenuation_linear,
+            attenuation_quadratic=light.attenuation_quadratic, success=True)
+
+    def _set_light_properties(self, request):
+        position, orientation = _pose_parts(request.pose)
+        self.world.set_light(request.light_name, request.cast_shadows,
+                             _colour(request.diffuse), _colour(request.specular),
+                             request.attenuation_constant, request.attenuation_linear,
+                             request.attenuation_quadratic, _vector(request.direction),
+                             position, orientation)
+        return SetLightPropertiesResponse(success=True)  # no status_message (:1396)
+
+    def _delete_light(self, request):
+        self.world.delete_light(request.light_name)
+        return DeleteLightResponse(True, f"DeleteLight: {request.light_name} successfully "
+                                         "deleted")
 
     def _get_physics(self, _request):
         properties = self.world.physics_properties()

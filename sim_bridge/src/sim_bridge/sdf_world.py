@@ -2,8 +2,10 @@
 
 A world is ``<physics>`` (step size), ``<gravity>``, ``<include>`` of ``model://NAME``
 (searched in ``GAZEBO_MODEL_PATH``, then in sim_bridge's ``models/``), and ``<model>``
-with ``<static>``, ``<pose>`` and links of box, cylinder, sphere, plane and mesh geometry.
-Lights, scenes, GUI and plugins of the world are accepted and ignored.
+with ``<static>``, ``<pose>`` and links of box, cylinder, sphere, plane and mesh geometry,
+and the world's lights: its ``<light>`` elements and the lights it includes (``model://sun``),
+with SDF's defaults (:class:`LightSpec`), for gazebo_ros's light services. Scenes, GUI and
+plugins of the world are accepted and ignored.
 
 Meshes (``model://``, ``file://`` or relative URIs) are read as Gazebo reads them, through
 :mod:`sim_bridge.mesh_files`: OBJ, STL and Collada, the last converted to OBJ for pybullet
@@ -38,7 +40,7 @@ import logging
 import os
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
-from typing import Callable, Dict, List, Optional, Sequence, Tuple
+from typing import Callable, Dict, List, Optional, Sequence, Tuple, Union
 
 from sim_bridge.materials import gazebo_colour
 from sim_bridge.mesh_files import MeshError, bounds, collision_fallback, loadable_file
@@ -178,12 +180,33 @@ class ModelSpec:
 
 
 @dataclass
+class LightSpec:
+    """A ``<light>``, with SDF's defaults for what it leaves out (sdformat sdf9 66a8c21,
+    sdf/1.6/light.sdf: the line of each is given). Mutable: set_light_properties changes it."""
+
+    name: str
+    type: str = "point"  # :9 (point, directional, spot)
+    cast_shadows: bool = False  # :13
+    pose: Pose6 = ZERO_POSE  # in the world (:18)
+    diffuse: Tuple[float, float, float, float] = (1.0, 1.0, 1.0, 1.0)  # :20
+    specular: Tuple[float, float, float, float] = (0.1, 0.1, 0.1, 1.0)  # :23
+    attenuation_range: float = 10.0  # m, :29
+    attenuation_linear: float = 1.0  # :32
+    attenuation_constant: float = 1.0  # :35
+    attenuation_quadratic: float = 0.0  # :38
+    direction: Tuple[float, float, float] = (0.0, 0.0, -1.0)  # :43 (spot and directional)
+
+
+@dataclass
 class WorldSpec:
     name: str = "default"
     step_size: float = DEFAULT_STEP_SIZE
     gravity: Tuple[float, float, float] = DEFAULT_GRAVITY
     models: List[ModelSpec] = field(default_factory=list)
     source: str = ""
+    # the world's lights in the file's order (an included one with its <include>'s name
+    # and pose, as sdformat's parser.cc gives them: sdf9 66a8c21 src/parser.cc:987-1027)
+    lights: List[LightSpec] = field(default_factory=list)
 
 
 def model_search_path() -> List[str]:
@@ -425,6 +448,46 @@ def _replace_collisions(link: LinkSpec, failed: List[Tuple[str, _UnreadableMesh]
                      f"{source}: {label}: mesh '{mesh.uri}' {mesh.reason}; {done}")
 
 
+def _colour(element: ET.Element, tag: str, default: Tuple[float, ...], what: str,
+            source: str) -> Tuple[float, ...]:
+    """An SDF colour: red, green, blue and, if given, alpha (1 when left out)."""
+    text = element.findtext(tag)
+    if text is None or not text.strip():
+        return default
+    count = 3 if len(text.split()) == 3 else 4
+    values = _numbers(text, count, f"{what} <{tag}>", source)
+    return values if count == 4 else (*values, 1.0)
+
+
+def _light(element: ET.Element, source: str) -> LightSpec:
+    """A ``<light>`` (see :class:`LightSpec` for the defaults)."""
+    name = element.get("name", "__default__")
+    what = f"light '{name}'"
+    light = LightSpec(name, element.get("type", LightSpec.type))
+    light.cast_shadows = (element.findtext("cast_shadows") or str(LightSpec.cast_shadows)
+                          ).strip().lower() in ("1", "true")
+    light.pose = _pose(element, what, source)
+    light.diffuse = _colour(element, "diffuse", LightSpec.diffuse, what,  # type: ignore
+                            source)
+    light.specular = _colour(element, "specular", LightSpec.specular, what,  # type: ignore
+                             source)
+    attenuation = element.find("attenuation")
+    if attenuation is not None:
+        label = f"{what} <attenuation>"
+        light.attenuation_range = _child_number(attenuation, "range",
+                                                LightSpec.attenuation_range, label, source)
+        light.attenuation_linear = _child_number(attenuation, "linear",
+                                                 LightSpec.attenuation_linear, label, source)
+        light.attenuation_constant = _child_number(
+            attenuation, "constant", LightSpec.attenuation_constant, label, source)
+        light.attenuation_quadratic = _child_number(
+            attenuation, "quadratic", LightSpec.attenuation_quadratic, label, source)
+    if (element.findtext("direction") or "").strip():
+        light.direction = _numbers(element.findtext("direction"), 3,  # type: ignore
+                                   f"{what} <direction>", source)
+    return light
+
+
 def _model(element: ET.Element, source: str, model_dir: str, warnings: _Warnings,
            chain: Chain = ()) -> ModelSpec:
     name = element.get("name")
@@ -436,7 +499,7 @@ def _model(element: ET.Element, source: str, model_dir: str, warnings: _Warnings
         model.links.append(_link(link, name, source, model_dir, warnings))
     for nested in element.findall("include"):
         inner = _include(nested, source, warnings, chain)
-        if inner is not None:
+        if isinstance(inner, ModelSpec):  # a light in a model is not read
             model.links.extend(_offset_links(inner))
     if element.find("joint") is not None and not static:
         try:
@@ -475,18 +538,21 @@ def load_model_file(path: str, warn: Optional[Warn] = None) -> Optional[ModelSpe
     Meshes that cannot be read are warned about through ``warn`` (see the module's notes)."""
     warnings = _Warnings()
     model = _load_model_file(path, warnings)
-    if model is not None:
+    if isinstance(model, ModelSpec):
         _check_shapeless(model, path, warnings)
     warnings.flush(warn)
-    return model
+    return model if isinstance(model, ModelSpec) else None
 
 
-def _load_model_file(path: str, warnings: _Warnings, chain: Chain = ()) -> Optional[ModelSpec]:
+def _load_model_file(path: str, warnings: _Warnings,
+                     chain: Chain = ()) -> Union[ModelSpec, LightSpec]:
+    """The model of a model file, or its light (model://sun is one)."""
     root = _parse(path)
     element = root if root.tag == "model" else root.find("model")
     if element is None:
-        if root.find("light") is not None or root.tag == "light":
-            return None
+        light = root if root.tag == "light" else root.find("light")
+        if light is not None:
+            return _light(light, path)
         raise SdfError(f"{path}: no <model> in it")
     return _model(element, path, os.path.dirname(path), warnings, chain)
 
@@ -514,7 +580,7 @@ def _parse_model(text: str, source: str, warnings: _Warnings) -> ModelSpec:
         # spawn_model -database NAME sends a world that includes model://NAME
         include = root.find(".//include")
         model = _include(include, source, warnings) if include is not None else None
-        if model is None:
+        if not isinstance(model, ModelSpec):
             raise SdfError(f"{source}: no <model> in it")
         if include.find("pose") is None:
             # gazebo_ros writes the spawn's pose into the <include> (the included model's
@@ -527,9 +593,10 @@ def _parse_model(text: str, source: str, warnings: _Warnings) -> ModelSpec:
 
 
 def _include(element: ET.Element, source: str, warnings: _Warnings,
-             chain: Chain = ()) -> Optional[ModelSpec]:
-    """The model an ``<include>`` names; ``chain``: the includes being followed around it
-    (see :data:`MAX_INCLUDE_DEPTH`)."""
+             chain: Chain = ()) -> Union[ModelSpec, LightSpec]:
+    """The model or light an ``<include>`` names, with the include's ``<name>`` and
+    ``<pose>`` (and, for a model, ``<static>``); ``chain``: the includes being followed
+    around it (see :data:`MAX_INCLUDE_DEPTH`)."""
     uri = (element.findtext("uri") or "").strip()
     if not uri:
         raise SdfError(f"{source}: an <include> has no <uri>")
@@ -546,13 +613,11 @@ def _include(element: ET.Element, source: str, warnings: _Warnings,
                        f"({' -> '.join([u for u, _ in chain] + [uri])}); sim_bridge follows "
                        f"at most {MAX_INCLUDE_DEPTH} (MAX_INCLUDE_DEPTH)")
     model = _load_model_file(path, warnings, chain + ((uri, real),))
-    if model is None:
-        return None
     if element.find("name") is not None:
         model.name = element.findtext("name").strip()
     if element.find("pose") is not None:
         model.pose = _pose(element, f"<include> of {uri}", source)
-    if element.find("static") is not None:
+    if isinstance(model, ModelSpec) and element.find("static") is not None:
         model.static = element.findtext("static").strip().lower() in ("1", "true")
     return model
 
@@ -617,6 +682,8 @@ def _load_world(path: str, warnings: _Warnings) -> WorldSpec:
                 model = _include(element, path, warnings)
             elif element.tag == "model":
                 model = _model(element, path, os.path.dirname(path), warnings)
+            elif element.tag == "light":
+                model = _light(element, path)
             else:
                 continue
         except UnsupportedModel as error:
@@ -624,7 +691,8 @@ def _load_world(path: str, warnings: _Warnings) -> WorldSpec:
             warnings.add(("unsupported", str(error)), f"{error}: left out of the world, which "
                          "runs without it", counted="model")
             continue
-        if model is None:  # a light: accepted, ignored
+        if isinstance(model, LightSpec):
+            spec.lights.append(model)
             continue
         if model.name in names:
             raise SdfError(f"{path}: two models are named '{model.name}'")

@@ -3,9 +3,10 @@
 It holds the models (static scenery, free bodies from SDF, robots from URDF with their
 plugins), steps the physics with a fixed step, keeps simulated time as an integer number
 of nanoseconds (monotonic, also across resets), and answers Gazebo's questions: spawn,
-delete, get and set a model's or a link's state, a model's properties, the physics
+delete, get and set a model's or a link's state, a model's, a joint's and a link's
+properties (a link's mass and inertia: its lumped pybullet links together), the physics
 properties (step size, update rate, gravity), wrenches and joint efforts for a while of
-simulated time (:mod:`sim_bridge.external_forces`), pause, reset.
+simulated time (:mod:`sim_bridge.external_forces`), the world file's lights, pause, reset.
 
 Names are Gazebo's: a link is ``model::link`` or its plain name (the first model having
 it, as Gazebo's ``EntityByName``), and a model's links and joints are those Gazebo shows,
@@ -39,9 +40,9 @@ from sim_bridge import ray_kernel
 from sim_bridge.ray_caster import Primitive, ShapeSet, cast, primitive_for
 from sim_bridge.ray_scene import RayScene
 from sim_bridge.robot_body import RobotBody
-from sim_bridge.sdf_world import ModelSpec, ShapeSpec, WorldSpec
+from sim_bridge.sdf_world import LightSpec, ModelSpec, ShapeSpec, WorldSpec
 from sim_bridge.tyre_friction import TyreFriction
-from urdf_tools.kinematics import matrix_rpy, origin_transform
+from urdf_tools.kinematics import link_transform, matrix_rpy, origin_transform, rpy_matrix
 from urdf_tools.model import UrdfError, parse_urdf
 
 # pybullet multiplies the friction of the two surfaces in contact: world surfaces are 1.0
@@ -131,6 +132,9 @@ class Model:
     # what set_joint_properties changed: joint → damping (N m s/rad), (lower, upper) stops
     joint_damping: Dict[str, float] = field(default_factory=dict)
     joint_stops: Dict[str, Tuple[float, float]] = field(default_factory=dict)
+    # a free SDF body whose gravity set_link_properties switched off (a robot's links:
+    # RobotBody.weightless_links)
+    weightless: bool = False
 
 
 @dataclass(frozen=True)
@@ -169,6 +173,49 @@ class JointProperties:
 
 
 @dataclass(frozen=True)
+class LinkProperties:
+    """gazebo_msgs/GetLinkProperties' answer for one of Gazebo's links (its lumped parts
+    together): the centre of mass in the link's frame, the mass, and the inertia tensor
+    about the centre of mass in the axes of the link's inertial frame, as Gazebo's
+    ``Inertial`` holds it (``ixx, ixy, ixz, iyy, iyz, izz``)."""
+
+    com: Vec3
+    gravity_mode: bool
+    mass: float
+    inertia: Tuple[float, float, float, float, float, float]
+
+
+@dataclass(frozen=True)
+class _MassPart:
+    """One pybullet link (or a static link's SDF inertial) of a Gazebo link: its mass, its
+    principal moments, its principal axes and its centre of mass in the Gazebo link's
+    frame. ``index``: pybullet's link index (-1 the base), None for a static model."""
+
+    index: Optional[int]
+    mass: float
+    moments: np.ndarray
+    axes: np.ndarray
+    centre: np.ndarray
+
+    def tensor(self, scale: float = 1.0) -> np.ndarray:
+        """Its inertia about its own centre of mass, in the Gazebo link's axes."""
+        return self.axes @ np.diag(self.moments * scale) @ self.axes.T
+
+
+def _combined(parts: Sequence[_MassPart]) -> Tuple[float, np.ndarray, np.ndarray]:
+    """Mass, centre of mass and inertia about it (the link's axes) of lumped parts: the
+    parallel-axis theorem, as sdformat lumps a fixed joint's child into its parent."""
+    mass = sum(part.mass for part in parts)
+    centre = sum(part.mass * part.centre for part in parts) / mass
+    tensor = np.zeros((3, 3))
+    for part in parts:
+        offset = part.centre - centre
+        tensor += part.tensor() + part.mass * (offset @ offset * np.eye(3)
+                                               - np.outer(offset, offset))
+    return mass, centre, tensor
+
+
+@dataclass(frozen=True)
 class SensorRate:
     """A sensor as performance_metrics names it (``model::link::sensor``, the link
     Gazebo's, after lumping), its type and its update rate in Hz of simulated time."""
@@ -192,6 +239,12 @@ class PhysicsProperties:
 # The largest coordinate pybullet's transform functions carry: they compute in single
 # precision, so a position of 1e300 sent to set_model_state came back (inf, nan, nan).
 MAX_COORDINATE = float(np.finfo(np.float32).max)
+# set_link_properties: how far (m) a centre of mass asked for may be from the link's and
+# still be its own (get_link_properties' figures come back exactly; this allows for a
+# client's rounding), and the share of the largest moment a product of inertia may reach
+# in a part's principal axes and still be zero (the rounding of the rotations)
+COM_TOLERANCE = 1e-6
+INERTIA_TOLERANCE = 1e-6
 
 
 def _finite(values: Sequence[float], what: str) -> None:
@@ -272,6 +325,10 @@ class World:
         # (0: as many as it can); the world does not pace itself, its owner does
         self.max_update_rate = 1.0 / step_size
         self.forces = ExternalForces(self.client)
+        # the world file's lights (gazebo_ros's light services), in its order
+        self.lights: List[LightSpec] = []
+        # free SDF bodies without gravity: (pybullet body, mass)
+        self._weightless_bodies: List[Tuple[int, float]] = []
         self._configure_physics()
 
     # --- physics settings --------------------------------------------------------------
@@ -362,6 +419,7 @@ class World:
         self._configure_physics()
         for model in spec.models:
             self.add_sdf_model(model)
+        self.lights.extend(spec.lights)
 
     # --- models from SDF ------------------------------------------------------------------
     def add_sdf_model(self, spec: ModelSpec, position: Optional[Sequence[float]] = None,
@@ -972,6 +1030,177 @@ class World:
                                      targetVelocity=float(vel[0]) if vel else 0.0,
                                      force=force, physicsClientId=self.client)
 
+    # --- link properties (gazebo_ros's get_ and set_link_properties) ----------------------
+    def _mass_parts(self, model: Model, body: str) -> List[_MassPart]:
+        """The parts of one of Gazebo's links as pybullet has them now (a robot's: the link
+        and those lumped into it, the link first), placed in the link's frame."""
+        if model.robot is not None:
+            robot, parts = model.robot, []
+            for link in model.structure.links_of(body):
+                index = robot.link_index[link]
+                info = pb.getDynamicsInfo(robot.id, index, physicsClientId=self.client)
+                # fixed joints only: where the part is in the link does not change
+                placed = link_transform(robot.model, body, link)
+                parts.append(_MassPart(
+                    index, info[0], np.asarray(info[2], dtype=float),
+                    placed[:3, :3] @ quaternion_matrix(info[4]),
+                    placed[:3, :3] @ np.asarray(info[3], dtype=float) + placed[:3, 3]))
+            return parts
+        if model.kind == "static":  # no pybullet dynamics: the SDF's inertial
+            link = next(l for l in model.spec.links if l.name == body)
+            frame = pose6_matrix(link.inertial_pose)
+            return [_MassPart(None, link.mass, np.asarray(link.inertia, dtype=float),
+                              frame[:3, :3], frame[:3, 3])]
+        info = pb.getDynamicsInfo(model.body, -1, physicsClientId=self.client)
+        return [_MassPart(-1, info[0], np.asarray(info[2], dtype=float),
+                          quaternion_matrix(info[4]), np.asarray(info[3], dtype=float))]
+
+    @staticmethod
+    def _inertial_axes(model: Model, body: str) -> np.ndarray:
+        """The axes Gazebo's ``Inertial`` of the link holds its moments in: the link's own
+        inertial frame's (a URDF link's ``<inertial><origin rpy>``, kept when sdformat lumps
+        children into it, sdf9 66a8c21 src/parser_urdf.cc:887-892; none: the link's axes)."""
+        if model.robot is not None:
+            inertial = model.robot.model.links[body].inertial
+            return rpy_matrix(*inertial.origin.rpy) if inertial is not None else np.eye(3)
+        link = next(l for l in model.spec.links if l.name == body)
+        return pose6_matrix(link.inertial_pose)[:3, :3]
+
+    def _gravity_mode(self, model: Model, body: str) -> bool:
+        """Whether gravity pulls the link: not when a part of it is weightless (sdformat
+        writes a lumped child's <gravity> into the link it joins, parser_urdf.cc:2071-2079)."""
+        if model.robot is not None:
+            weightless = {index for index, _ in model.robot.weightless_links}
+            return not any(model.robot.link_index[link] in weightless
+                           for link in model.structure.links_of(body))
+        return not model.weightless
+
+    def link_properties(self, name: str) -> LinkProperties:
+        """gazebo_ros's get_link_properties: the link's mass, its centre of mass in its
+        frame and its inertia about that centre, its lumped parts together (their masses
+        and tensors as pybullet has them, combined by the parallel-axis theorem), in the
+        axes of the link's inertial frame (see _inertial_axes), and its gravity mode."""
+        ref = self.find_link(name)
+        model = self.model(ref.model)
+        mass, centre, tensor = _combined(self._mass_parts(model, ref.link))
+        axes = self._inertial_axes(model, ref.link)
+        held = axes.T @ tensor @ axes
+        return LinkProperties(
+            tuple(float(v) for v in centre), self._gravity_mode(model, ref.link), float(mass),
+            (float(held[0, 0]), float(held[0, 1]), float(held[0, 2]), float(held[1, 1]),
+             float(held[1, 2]), float(held[2, 2])))
+
+    def set_link_properties(self, name: str, com: Sequence[float], gravity_mode: bool,
+                            mass: float, inertia: Sequence[float]) -> None:
+        """gazebo_ros's set_link_properties, what pybullet can do from the next step on: the
+        mass (every part of the link scaled alike, so its centre of mass stays), the
+        moments of inertia about the centre of mass (``inertia``: ixx, ixy, ixz, iyy, iyz,
+        izz in the axes get_link_properties gives them in; the change goes to the link's
+        own part, along its principal axes) and gravity (pybullet has no switch per link:
+        a weightless link is held up by a force of m g at its centre of mass each step).
+        Refused, with the reason: a centre of mass other than the link's own (pybullet
+        fixes a link's inertial frame when it builds the body), products of inertia that
+        would turn the principal axes, a moment that is not positive, a mass that is not
+        positive, a number that is not finite, a static model's link."""
+        ref = self.find_link(name)
+        model = self.model(ref.model)
+        if model.kind == "static":
+            raise SimError(f"link '{ref.scoped}' belongs to static model '{model.name}': "
+                           "it does not move, so its mass and inertia change nothing")
+        _finite(com, "the centre of mass")
+        _finite((mass,), "the mass")
+        _finite(inertia, "the inertia (ixx, ixy, ixz, iyy, iyz, izz)")
+        if mass <= 0:
+            raise SimError(f"the mass {mass:g} kg must be positive")
+        parts = self._mass_parts(model, ref.link)
+        total, centre, tensor = _combined(parts)
+        if np.linalg.norm(np.asarray(com, dtype=float) - centre) > COM_TOLERANCE:
+            raise SimError(
+                f"the centre of mass ({', '.join(f'{v:g}' for v in com)}) is not link "
+                f"'{ref.scoped}''s own ({', '.join(f'{v:g}' for v in centre)}, in its "
+                "frame): pybullet fixes a link's inertial frame when it builds the body and "
+                "cannot move it; send the link's own (get_link_properties gives it)")
+        scale = float(mass) / total
+        ixx, ixy, ixz, iyy, iyz, izz = (float(v) for v in inertia)
+        axes = self._inertial_axes(model, ref.link)
+        wanted = axes @ np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]]) @ axes.T
+        # the link's own part takes the change, in its principal axes
+        own = parts[0]
+        change = own.axes.T @ (wanted - scale * tensor) @ own.axes
+        moments = own.moments * scale + np.diag(change)
+        products = change - np.diag(np.diag(change))
+        if np.abs(products).max() > INERTIA_TOLERANCE * max(np.abs(moments).max(),
+                                                            np.abs(wanted).max()):
+            held = axes.T @ (scale * tensor) @ axes
+            raise SimError(
+                f"the products of inertia (ixy {ixy:g}, ixz {ixz:g}, iyz {iyz:g}) would turn "
+                f"link '{ref.scoped}''s principal axes, which pybullet fixes when it builds "
+                "the body (it takes the moments along them only); at this mass they are "
+                f"ixy {held[0, 1]:g}, ixz {held[0, 2]:g}, iyz {held[1, 2]:g}")
+        if np.any(moments <= 0):
+            raise SimError(f"the inertia asked for leaves link '{ref.scoped}''s own part "
+                           f"with principal moments {', '.join(f'{v:g}' for v in moments)} "
+                           "kg m^2: each must be positive")
+        body = model.body
+        for number, part in enumerate(parts):
+            # mass and moments in one call: pybullet recomputes a link's inertia from its
+            # collision shapes when its mass alone is changed
+            pb.changeDynamics(body, part.index, mass=part.mass * scale,
+                              localInertiaDiagonal=list(moments if number == 0
+                                                        else part.moments * scale),
+                              physicsClientId=self.client)
+        if model.robot is not None:
+            model.robot.set_gravity([part.index for part in parts], gravity_mode)
+            if model.friction is not None:  # the tyres' slip stiffness follows the mass
+                model.friction.mass += (scale - 1.0) * total
+                model.friction.set_physics(self.step_size, self.gravity)
+        else:
+            model.weightless = not gravity_mode
+        self._refresh_weightless()
+
+    # --- lights (gazebo_ros's light services) -----------------------------------------------
+    def light(self, name: str) -> LightSpec:
+        """A light of the world by its name (the first of that name, as Gazebo's
+        ``LightByName``)."""
+        for light in self.lights:
+            if light.name == name:
+                return light
+        known = ", ".join(light.name for light in self.lights) or "none"
+        raise SimError(f"there is no light named '{name}' (lights: {known})")
+
+    def set_light(self, name: str, cast_shadows: bool, diffuse: Sequence[float],
+                  specular: Sequence[float], attenuation_constant: float,
+                  attenuation_linear: float, attenuation_quadratic: float,
+                  direction: Sequence[float], position: Sequence[float],
+                  orientation: Sequence[float]) -> None:
+        """gazebo_ros's set_light_properties: every one of these is the request's, as
+        Noetic writes them all into the light (gazebo_ros_api_plugin.cpp:1366-1392); an
+        orientation (0, 0, 0, 0) is the identity (as set_model_state's)."""
+        light = self.light(name)
+        for what, values in (("diffuse", diffuse), ("specular", specular),
+                             ("the attenuation", (attenuation_constant, attenuation_linear,
+                                                  attenuation_quadratic)),
+                             ("the direction", direction)):
+            _finite(values, what)
+        _finite(position, "the position")
+        if not any(orientation):
+            orientation = (0.0, 0.0, 0.0, 1.0)
+        try:
+            turned = quaternion_matrix(normalized(orientation))
+        except ValueError as error:
+            raise SimError(f"the orientation: {error}") from None
+        light.cast_shadows = bool(cast_shadows)
+        light.diffuse = tuple(float(v) for v in diffuse)  # type: ignore[assignment]
+        light.specular = tuple(float(v) for v in specular)  # type: ignore[assignment]
+        light.attenuation_constant = float(attenuation_constant)
+        light.attenuation_linear = float(attenuation_linear)
+        light.attenuation_quadratic = float(attenuation_quadratic)
+        light.direction = tuple(float(v) for v in direction)  # type: ignore[assignment]
+        light.pose = (*(float(v) for v in position), *matrix_rpy(turned))  # type: ignore
+
+    def delete_light(self, name: str) -> None:
+        self.lights.remove(self.light(name))
+
     def sensors(self) -> List[SensorRate]:
         """Every robot's sensors with the rate they update at in simulated time: their
         ``<update_rate>`` (Hz), or every step when it is 0, absent or unreadable (Gazebo's
@@ -1132,6 +1361,11 @@ class World:
         self._refresh_step_lists()
         for robot in self._weightless:
             robot.apply_weightlessness(self.gravity)
+        for body, mass in self._weightless_bodies:
+            # pybullet's base is its centre of mass: gravity cancelled there
+            com = pb.getBasePositionAndOrientation(body, physicsClientId=self.client)[0]
+            pb.applyExternalForce(body, -1, [-mass * g for g in self.gravity], com,
+                                  pb.WORLD_FRAME, physicsClientId=self.client)
         if self.forces:
             self.forces.apply(self.now_ns)
         for friction in self._frictions:
@@ -1142,11 +1376,18 @@ class World:
     def _refresh_step_lists(self) -> None:
         if self._plugins is None:  # the models changed since the last step
             self._plugins = [p for m in self.models.values() for p in m.plugins]
-            self._weightless = [m.robot for m in self.models.values()
-                                if m.robot is not None and m.robot.weightless_links]
+            self._refresh_weightless()
             self._frictions = [m.friction for m in self.models.values() if m.friction]
             for friction in self._frictions:
                 friction.forget()
+
+    def _refresh_weightless(self) -> None:
+        """The bodies whose gravity is cancelled each step, as their links say now."""
+        self._weightless = [m.robot for m in self.models.values()
+                            if m.robot is not None and m.robot.weightless_links]
+        self._weightless_bodies = [
+            (m.body, pb.getDynamicsInfo(m.body, -1, physicsClientId=self.client)[0])
+            for m in self.models.values() if m.kind == "body" and m.weightless]
 
     # --- ray casting (lasers) -------------------------------------------------------------
     def cast_rays(self, origin: Sequence[float], directions: np.ndarray, near: float,

@@ -13,12 +13,13 @@ from std_srvs.srv import Empty, EmptyRequest
 from gazebo_msgs.msg import LinkState, ModelState, ODEJointProperties
 from gazebo_msgs.srv import (ApplyBodyWrench, ApplyBodyWrenchRequest, BodyRequest,
                              BodyRequestRequest, DeleteModel, DeleteModelRequest,
-                             GetJointProperties, GetModelProperties,
+                             GetJointProperties, GetLinkProperties, GetModelProperties,
                              GetModelPropertiesRequest, GetModelState,
                              GetModelStateRequest, GetPhysicsProperties,
                              GetPhysicsPropertiesRequest, GetWorldProperties,
                              GetWorldPropertiesRequest, JointRequest, JointRequestRequest,
-                             SetJointProperties, SetModelConfiguration,
+                             SetJointProperties, SetLinkProperties,
+                             SetModelConfiguration,
                              SetModelConfigurationRequest,
                              SetModelState, SetModelStateRequest, SpawnModel,
                              SpawnModelRequest)
@@ -340,3 +341,32 @@ def test_joint_properties_services_answer_and_set(node):
     missing = call(node, SetJointProperties, node._set_joint_properties, joint_name="elbow",
                    ode_joint_config=ODEJointProperties())
     assert not missing.success and missing.status_message.startswith("SetJointProperties: ")
+
+
+def test_link_properties_services_answer_and_set(node):
+    """get_link_properties (:1174-1230): the rotor's disc, its mass, centre of mass (com's
+    orientation the identity, :1221-1224) and inertia, "GetLinkProperties: got properties"
+    (:1227); set_link_properties (:1402-1430) with the same centre of mass and twice the
+    mass and moments, "SetLinkProperties: properties set" (:1427), and what the next get
+    reports; a request moving the centre of mass, or an unknown link: success false."""
+    node.world.spawn_urdf("rotor", ROTOR_URDF, (0.0, 0.0, 0.0))
+    answer = call(node, GetLinkProperties, node._get_link_properties, link_name="rotor::disc")
+    assert answer.success and answer.status_message == "GetLinkProperties: got properties"
+    assert answer.gravity_mode and answer.mass == pytest.approx(2.0)
+    assert (answer.com.position.x, answer.com.position.y, answer.com.position.z,
+            answer.com.orientation.w) == pytest.approx((0, 0, 0, 1))
+    assert (answer.ixx, answer.ixy, answer.iyy, answer.izz) == pytest.approx((0.1, 0, 0.1, 0.2))
+    fields = dict(link_name="rotor::disc", com=answer.com, gravity_mode=True, mass=4.0,
+                  ixx=0.2, ixy=0.0, ixz=0.0, iyy=0.2, iyz=0.0, izz=0.4)
+    answer = call(node, SetLinkProperties, node._set_link_properties, **fields)
+    assert answer.success and answer.status_message == "SetLinkProperties: properties set"
+    answer = call(node, GetLinkProperties, node._get_link_properties, link_name="disc")
+    assert (answer.mass, answer.izz) == pytest.approx((4.0, 0.4))
+    moved = Pose()
+    moved.position.z, moved.orientation.w = 0.1, 1.0
+    refused = call(node, SetLinkProperties, node._set_link_properties,
+                   **dict(fields, com=moved))
+    assert not refused.success and refused.status_message.startswith("SetLinkProperties: ")
+    assert "cannot move it" in refused.status_message
+    missing = call(node, GetLinkProperties, node._get_link_properties, link_name="rotor::hub")
+    assert not missing.success and "has no link 'hub'" in missing.status_message

@@ -392,3 +392,151 @@ def test_joint_properties_that_cannot_be_set_are_refused(world, rotor, name, arg
                                                           words):
     with pytest.raises(SimError, match=words):
         world.set_joint_properties(name, **arguments)
+
+
+# --- link properties --------------------------------------------------------------------
+# a free robot whose link 'body' lumps 'plate' (a fixed joint), and whose inertial frame is
+# turned: Gazebo's Inertial keeps the body's moments in that frame (parser_urdf.cc:887-892)
+LUMPED = """<robot name="lumped">
+  <link name="body"><inertial><origin xyz="0.1 0 0" rpy="0 0 0.3"/><mass value="2"/>
+    <inertia ixx="0.1" ixy="0.01" ixz="0" iyy="0.2" iyz="0" izz="0.3"/></inertial></link>
+  <joint name="weld" type="fixed"><parent link="body"/><child link="plate"/>
+    <origin xyz="0 0.5 0" rpy="0.2 0 0"/></joint>
+  <link name="plate"><inertial><origin xyz="0 0 0.2"/><mass value="1"/>
+    <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.02" iyz="0" izz="0.03"/></inertial></link>
+</robot>"""
+
+
+def _turn(roll, pitch, yaw):
+    """URDF's fixed-axis roll, pitch, yaw as a matrix, written out (Rz Ry Rx)."""
+    cr, sr, cp, sp, cy, sy = (math.cos(roll), math.sin(roll), math.cos(pitch),
+                              math.sin(pitch), math.cos(yaw), math.sin(yaw))
+    return (np.array([[cy, -sy, 0], [sy, cy, 0], [0, 0, 1]])
+            @ np.array([[cp, 0, sp], [0, 1, 0], [-sp, 0, cp]])
+            @ np.array([[1, 0, 0], [0, cr, -sr], [0, sr, cr]]))
+
+
+def _six(tensor):
+    return (tensor[0, 0], tensor[0, 1], tensor[0, 2], tensor[1, 1], tensor[1, 2], tensor[2, 2])
+
+
+def test_link_properties_lump_the_parts_by_the_parallel_axis_theorem(weightless):
+    """get_link_properties (gazebo_ros_api_plugin.cpp:1174-1230) of a link that lumps a
+    fixed child: the masses summed, the centre of mass their weighted mean in the link's
+    frame, the inertia about it by the parallel-axis theorem, in the axes of the link's own
+    inertial frame (Gazebo's Inertial, :1196-1205); com's orientation the identity
+    (:1221-1224). Worked from the URDF's numbers here, not from the code under test."""
+    weightless.spawn_urdf("lumped", LUMPED, (0, 0, 1))
+    body_axes = _turn(0, 0, 0.3)
+    body_tensor = body_axes @ np.array([[0.1, 0.01, 0], [0.01, 0.2, 0], [0, 0, 0.3]]) \
+        @ body_axes.T
+    body_centre = np.array([0.1, 0, 0])
+    plate_axes = _turn(0.2, 0, 0)
+    plate_tensor = plate_axes @ np.diag([0.01, 0.02, 0.03]) @ plate_axes.T
+    plate_centre = np.array([0, 0.5, 0]) + plate_axes @ np.array([0, 0, 0.2])
+    centre = (2 * body_centre + 1 * plate_centre) / 3
+    tensor = np.zeros((3, 3))
+    for mass, own, where in ((2, body_tensor, body_centre), (1, plate_tensor, plate_centre)):
+        d = where - centre
+        tensor += own + mass * (d @ d * np.eye(3) - np.outer(d, d))
+    properties = weightless.link_properties("lumped::body")
+    assert properties.mass == pytest.approx(3.0)
+    assert properties.com == pytest.approx(tuple(centre), abs=1e-9)
+    assert properties.inertia == pytest.approx(_six(body_axes.T @ tensor @ body_axes),
+                                               abs=1e-9)
+    assert properties.gravity_mode
+    # a link alone reports its URDF inertia as written, in its inertial frame
+    weightless.spawn_urdf("rotor", ROTOR, (2, 0, 0))
+    disc = weightless.link_properties("rotor::disc")
+    assert (disc.mass, disc.com) == (pytest.approx(2.0), pytest.approx((0, 0, 0)))
+    assert disc.inertia == pytest.approx((0.1, 0, 0, 0.1, 0, 0.2), abs=1e-9)
+
+
+def test_set_link_mass_halves_what_a_force_does(weightless):
+    """set_link_properties' mass (SetMass, :1423) is the link's mass in pybullet: 3 N for
+    1 s moves the lumped 3 kg robot at 1 m/s, at 0.5 m/s once set to 6 kg (every part
+    doubled, so the centre of mass stays); the same for a free SDF box (2 kg → 4 kg)."""
+    model = weightless.spawn_urdf("lumped", LUMPED, (0, 0, 1))
+    box = free_box(weightless, pose=(3, 0, 1, 0, 0, 0))
+    properties = weightless.link_properties("lumped::body")
+    weightless.set_link_properties("lumped::body", properties.com, True, 6.0,
+                                   tuple(2 * v for v in properties.inertia))
+    weightless.set_link_properties("box::link", (0, 0, 0), True, 2 * BOX_MASS,
+                                   (2 * BOX_INERTIA, 0, 0, 2 * BOX_INERTIA, 0,
+                                    2 * BOX_INERTIA))
+    weightless.apply_wrench("lumped::body", (3.0, 0, 0), (0, 0, 0), duration_ns=SECOND)
+    weightless.apply_wrench("box::link", (3.0, 0, 0), (0, 0, 0), duration_ns=SECOND)
+    run(weightless, 1.0)
+    assert pb.getBaseVelocity(model.body, physicsClientId=weightless.client)[0][0] == \
+        pytest.approx(0.5, rel=1e-3)
+    assert pb.getBaseVelocity(box.body, physicsClientId=weightless.client)[0][0] == \
+        pytest.approx(3.0 / (2 * BOX_MASS), rel=1e-3)
+    again = weightless.link_properties("lumped::body")
+    assert again.mass == pytest.approx(6.0) and again.com == pytest.approx(properties.com)
+    assert again.inertia == pytest.approx(tuple(2 * v for v in properties.inertia))
+
+
+def test_set_link_inertia_slows_the_joint_as_the_moment_says(world, rotor):
+    """set_link_properties' moments (SetInertiaMatrix, :1422) are pybullet's: an effort of
+    0.5 N m for 0.4 s turns the disc to w = t d / I, 1.0 rad/s with its izz 0.2 kg m², 0.5
+    once izz is 0.4 (its mass kept). Before: no such service."""
+    world.set_link_properties("rotor::disc", (0, 0, 0), True, 2.0, (0.1, 0, 0, 0.1, 0, 0.4))
+    world.apply_joint_effort("spin", 0.5, duration_ns=int(0.4 * SECOND))
+    run(world, 0.5)
+    assert rotor.robot.joint_position_velocity("spin")[1] == pytest.approx(0.5, rel=1e-3)
+    assert world.link_properties("rotor::disc").inertia == pytest.approx(
+        (0.1, 0, 0, 0.1, 0, 0.4))
+
+
+PENDULUM = """<robot name="pendulum"><link name="world"/>
+  <link name="pivot"><inertial><mass value="1"/><inertia ixx="0.01" ixy="0" ixz="0"
+    iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
+  <joint name="fix" type="fixed"><parent link="world"/><child link="pivot"/>
+    <origin xyz="0 0 1"/></joint>
+  <link name="arm"><inertial><origin xyz="0.5 0 0"/><mass value="1"/><inertia ixx="0.001"
+    ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.001"/></inertial></link>
+  <joint name="swing" type="continuous"><parent link="pivot"/><child link="arm"/>
+    <axis xyz="0 1 0"/></joint>
+</robot>"""
+
+
+def test_a_link_without_gravity_stays_where_it_is(world):
+    """gravity_mode (SetGravityMode, :1424; get :1191): false holds the horizontal arm of a
+    pendulum still for 1 s (with gravity it falls 0.5 m / (0.251 kg m^2) * 9.8 rad/s² at
+    first), and a free box floats; true again and the arm swings down. pybullet has no
+    switch per link: a force of m g at the centre of mass each step."""
+    pendulum = world.spawn_urdf("pendulum", PENDULUM, (0, 0, 0))
+    box = free_box(world, pose=(3, 0, 1, 0, 0, 0))
+    arm = world.link_properties("pendulum::arm")
+    world.set_link_properties("pendulum::arm", arm.com, False, arm.mass, arm.inertia)
+    world.set_link_properties("box::link", (0, 0, 0), False, BOX_MASS,
+                              (BOX_INERTIA, 0, 0, BOX_INERTIA, 0, BOX_INERTIA))
+    assert not world.link_properties("arm").gravity_mode
+    assert not world.link_properties("box::link").gravity_mode
+    run(world, 1.0)
+    assert pendulum.robot.joint_position_velocity("swing")[0] == pytest.approx(0, abs=1e-6)
+    assert world.pose("box")[0] == pytest.approx((3, 0, 1), abs=1e-6)
+    world.set_link_properties("pendulum::arm", arm.com, True, arm.mass, arm.inertia)
+    run(world, 0.1)
+    # at first the arm turns at 9.8 * 0.5 / 0.251 rad/s² (positive about y: down)
+    assert pendulum.robot.joint_position_velocity("swing")[0] == pytest.approx(
+        0.5 * 9.8 * 0.5 / 0.251 * 0.1 ** 2, rel=0.05)
+
+
+@pytest.mark.parametrize("name, com, mass, inertia, words", [
+    ("rotor::disc", (0, 0, 0.1), 2.0, (0.1, 0, 0, 0.1, 0, 0.2), "cannot move it"),
+    ("rotor::disc", (0, 0, 0), 2.0, (0.1, 0.05, 0, 0.1, 0, 0.2), "principal axes"),
+    ("rotor::disc", (0, 0, 0), 2.0, (0.1, 0, 0, 0.1, 0, -0.2), "must be positive"),
+    ("rotor::disc", (0, 0, 0), 0.0, (0.1, 0, 0, 0.1, 0, 0.2), "mass 0 kg must be positive"),
+    ("rotor::disc", (0, 0, 0), math.nan, (0.1, 0, 0, 0.1, 0, 0.2), "not finite"),
+    ("ground::link", (0, 0, 0), 1.0, (1, 0, 0, 1, 0, 1), "static model"),
+    ("rotor::wheel", (0, 0, 0), 1.0, (1, 0, 0, 1, 0, 1), "has no link 'wheel'"),
+])
+def test_link_properties_that_cannot_be_set_are_refused(world, rotor, name, com, mass,
+                                                         inertia, words):
+    """What pybullet cannot do is refused, naming why (Noetic takes them all, :1418-1424,
+    and moves the centre of mass or turns the axes); nothing changes."""
+    before = world.link_properties("rotor::disc")
+    with pytest.raises(SimError, match=words):
+        world.set_link_properties(name, com, True, mass, inertia)
+    assert world.link_properties("rotor::disc") == before
