@@ -2,6 +2,7 @@
 """rostest node: gazebo_ros's link, model-property, physics, wrench and effort services
 against ground truth: a wrench of F for d seconds changes a free body's velocity by F·d/m,
 clearing it stops it, an effort turns a joint, zero gravity makes a dropped body float,
+a mass set by set_link_properties halves what a wrench does,
 link_states agrees with get_link_state, and bad names answer success false naming them
 while the simulator keeps running."""
 import os
@@ -18,9 +19,10 @@ from sim_checks import Simulator, wait_until  # noqa: E402
 
 from gazebo_msgs.msg import LinkState, LinkStates, PerformanceMetrics  # noqa: E402
 from gazebo_msgs.srv import (ApplyBodyWrench, ApplyJointEffort, BodyRequest,  # noqa: E402
-                             DeleteModel, GetLinkState, GetModelProperties,
-                             GetPhysicsProperties, JointRequest, SetLinkState,
-                             SetPhysicsProperties, SpawnModel)
+                             DeleteModel, GetLinkProperties, GetLinkState,
+                             GetModelProperties, GetPhysicsProperties, JointRequest,
+                             SetLinkProperties, SetLinkState, SetPhysicsProperties,
+                             SpawnModel)
 from sim_bridge.poses import quaternion_from_rpy, yaw_from_quaternion  # noqa: E402
 from sim_bridge.testing import service_proxy  # noqa: E402
 from std_srvs.srv import Empty  # noqa: E402
@@ -64,6 +66,10 @@ class LinkAndPhysics(unittest.TestCase):
         name = "/gazebo/"
         cls.get_link = service_proxy(name + "get_link_state", GetLinkState)
         cls.set_link = service_proxy(name + "set_link_state", SetLinkState)
+        cls.get_link_properties = service_proxy(name + "get_link_properties",
+                                                GetLinkProperties)
+        cls.set_link_properties = service_proxy(name + "set_link_properties",
+                                                SetLinkProperties)
         cls.properties = service_proxy(name + "get_model_properties", GetModelProperties)
         cls.get_physics = service_proxy(name + "get_physics_properties", GetPhysicsProperties)
         cls.set_physics = service_proxy(name + "set_physics_properties", SetPhysicsProperties)
@@ -171,6 +177,34 @@ class LinkAndPhysics(unittest.TestCase):
         self.run_for(0.1 + seconds + 0.2)
         self.assertAlmostEqual(self.velocity("thrown_box").x, force * seconds / MASS,
                                delta=0.02 * force * seconds / MASS)
+
+    def test_a_link_of_twice_the_mass_takes_half_the_velocity(self):
+        """get_link_properties gives the box's 2 kg; set_link_properties to 4 kg (moments
+        doubled, the centre of mass its own, gravity on); 4 N for 0.5 s then move it at
+        0.5 m/s, not 1 (gazebo_ros_api_plugin.cpp:1174-1230, :1402-1430)."""
+        self.sim.pause()
+        self.spawn_box("heavy_box", 3.0, -3.0, 30.0)  # falling freely: no friction
+        got = self.get_link_properties("heavy_box::link")
+        self.assertTrue(got.success, got.status_message)
+        self.assertAlmostEqual(got.mass, MASS)
+        answer = self.set_link_properties("heavy_box::link", got.com, True, 2 * MASS,
+                                          2 * got.ixx, 0.0, 0.0, 2 * got.iyy, 0.0,
+                                          2 * got.izz)
+        self.assertTrue(answer.success, answer.status_message)
+        self.assertAlmostEqual(self.get_link_properties("heavy_box::link").mass, 2 * MASS)
+        force, seconds = 4.0, 0.5
+        start = rospy.Time.from_sec(self.sim.sim_time() + 0.1)
+        answer = self.wrench("heavy_box::link", "", Point(),
+                             Wrench(force=Vector3(force, 0, 0)), start,
+                             rospy.Duration.from_sec(seconds))
+        self.assertTrue(answer.success, answer.status_message)
+        self.run_for(0.1 + seconds + 0.2)
+        self.assertAlmostEqual(self.velocity("heavy_box").x, force * seconds / (2 * MASS),
+                               delta=0.02 * force * seconds / (2 * MASS))
+        moved = self.set_link_properties("heavy_box::link", pose(0, 0, 0.1), True, MASS,
+                                          got.ixx, 0.0, 0.0, got.iyy, 0.0, got.izz)
+        self.assertFalse(moved.success)
+        self.assertIn("cannot move it", moved.status_message)
 
     def test_clearing_a_wrench_stops_it(self):
         self.sim.pause()

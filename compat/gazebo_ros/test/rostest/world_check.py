@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""rostest node: /clock, pause, reset, model state services, and bad requests answered
-with their cause while the simulator keeps running."""
+"""rostest node: /clock, pause, reset, model state services, the world's lights, and bad
+requests answered with their cause while the simulator keeps running."""
 import math
 import os
 import sys
@@ -8,8 +8,9 @@ import unittest
 
 import rospy
 import rostest
-from geometry_msgs.msg import Pose, Twist
+from geometry_msgs.msg import Pose, Twist, Vector3
 from rosgraph_msgs.msg import Clock, Log
+from std_msgs.msg import ColorRGBA
 from std_srvs.srv import Empty
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -17,7 +18,8 @@ from sim_checks import Simulator, wait_until  # noqa: E402
 
 from gazebo_msgs.msg import ModelState, ModelStates  # noqa: E402
 from sim_bridge.poses import quaternion_from_rpy  # noqa: E402
-from gazebo_msgs.srv import DeleteModel, SetModelState, SpawnModel  # noqa: E402
+from gazebo_msgs.srv import (DeleteLight, DeleteModel, GetLightProperties,  # noqa: E402
+                             SetLightProperties, SetModelState, SpawnModel)
 
 ROBOT_WITHOUT_JOINT = """<robot name="r"><link name="base"><inertial><mass value="1"/>
 <inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial></link>
@@ -50,6 +52,9 @@ class World(unittest.TestCase):
         cls.delete = rospy.ServiceProxy("/gazebo/delete_model", DeleteModel)
         cls.set_state = rospy.ServiceProxy("/gazebo/set_model_state", SetModelState)
         cls.reset = rospy.ServiceProxy("/gazebo/reset_simulation", Empty)
+        cls.get_light = rospy.ServiceProxy("/gazebo/get_light_properties", GetLightProperties)
+        cls.set_light = rospy.ServiceProxy("/gazebo/set_light_properties", SetLightProperties)
+        cls.delete_light = rospy.ServiceProxy("/gazebo/delete_light", DeleteLight)
         cls.command = rospy.Publisher("/cmd_vel", Twist, queue_size=1, latch=True)
 
     def test_clock_advances_pauses_and_resumes(self):
@@ -143,6 +148,30 @@ class World(unittest.TestCase):
             self.assertIn(word, answer.status_message)
         # the simulator keeps running and keeps its robot
         self.assertIn("diff_bot", self.sim.properties().model_names)
+
+    def test_the_worlds_sun_is_a_light_to_get_and_set(self):
+        """The test world includes model://sun: get_light_properties gives its diffuse
+        0.8 0.8 0.8 1 (gazebo_ros_api_plugin.cpp:1312-1344); set_light_properties
+        (:1346-1400) changes what the next get reports; an unknown light, to get or to
+        delete (:886-931), answers success false naming the sun."""
+        rospy.wait_for_service("/gazebo/get_light_properties", timeout=10)
+        sun = self.get_light("sun")
+        self.assertTrue(sun.success, sun.status_message)
+        # ColorRGBA is single precision: to its 7 digits
+        self.assertEqual([round(v, 6) for v in (sun.diffuse.r, sun.diffuse.g, sun.diffuse.b,
+                                                sun.diffuse.a)], [0.8, 0.8, 0.8, 1.0])
+        answer = self.set_light("sun", True, ColorRGBA(0.5, 0.5, 0.4, 1.0),
+                                ColorRGBA(0.2, 0.2, 0.2, 1.0), sun.attenuation_constant,
+                                0.05, sun.attenuation_quadratic, Vector3(-0.5, 0.1, -0.9),
+                                pose(0, 0, 0, z=10.0))
+        self.assertTrue(answer.success, answer.status_message)
+        changed = self.get_light("sun")
+        self.assertEqual([round(v, 6) for v in (changed.diffuse.r, changed.diffuse.b,
+                                                changed.attenuation_linear)], [0.5, 0.4, 0.05])
+        for ask in (self.get_light, self.delete_light):
+            missing = ask("moon")
+            self.assertFalse(missing.success)
+            self.assertIn("(lights: sun)", missing.status_message)
 
     def test_spawning_a_name_in_use_is_refused(self):
         self.assert_refused(self.spawn_urdf("diff_bot", rospy.get_param("/robot_description"),
