@@ -54,7 +54,7 @@ from sim_bridge import one_simulator
 from sim_bridge.plugins.base import Bus, PluginError
 from sim_bridge.poses import quaternion_matrix
 from sim_bridge.ros_publishing import ClockPublisher, batch_queued_writes
-from sim_bridge.sdf_world import SdfError, load_world, parse_model
+from sim_bridge.sdf_world import SdfError, load_world, parse_light, parse_model
 from sim_bridge.stop_signals import StopSignals, shut_rospy_down
 from gazebo_msgs.srv import (ApplyBodyWrench, ApplyBodyWrenchResponse, ApplyJointEffort,
                             ApplyJointEffortResponse, BodyRequest, BodyRequestResponse,
@@ -493,6 +493,17 @@ class SimBridgeNode:
                      SetLinkState._request_class(link_state=message))
 
     def _spawn(self, request, kind: str):
+        light = parse_light(request.model_xml, f"light '{request.model_name}'") \
+            if kind == "sdf" else None
+        if light is not None:
+            # named by the request, at its own <pose>: gazebo_ros renames the light
+            # (gazebo_ros_api_plugin.cpp:2703) and puts no initial_pose into an SDF without
+            # <model> or <world> (:2427-2435)
+            light.name = request.model_name
+            self.world.add_light(light)
+            rospy.loginfo(f"spawned light '{request.model_name}'")
+            return SpawnModelResponse(True, f"SpawnModel: Successfully spawned entity "
+                                            f"'{request.model_name}'")
         position, orientation, _, _ = self.world.state_in_world(
             request.reference_frame, *_pose_parts(request.initial_pose), (0, 0, 0), (0, 0, 0))
         if kind == "urdf":

@@ -567,6 +567,20 @@ def parse_model(text: str, source: str = "<sdf>", warn: Optional[Warn] = None) -
     return model
 
 
+def parse_light(text: str, source: str = "<sdf>") -> Optional[LightSpec]:
+    """The light of spawn_sdf_model's model_xml when its root's first element is a
+    ``<light>`` (gazebo_ros spawns it as a light then, gazebo_ros_api_plugin.cpp:2654-2658,
+    :2697-2705), else None (a model: :func:`parse_model`)."""
+    try:
+        root = ET.fromstring(text)
+    except ET.ParseError:
+        return None  # parse_model names the error
+    if root.tag == "light":
+        return _light(root, source)
+    first = root[0] if len(root) else None
+    return _light(first, source) if first is not None and first.tag == "light" else None
+
+
 def _parse_model(text: str, source: str, warnings: _Warnings) -> ModelSpec:
     # a text longer in characters than the limit is longer in bytes: no need to encode it
     _check_size(len(text) if len(text) > MAX_DESCRIPTION_BYTES else len(text.encode("utf-8")),

@@ -1198,6 +1198,14 @@ class World:
         light.direction = tuple(float(v) for v in direction)  # type: ignore[assignment]
         light.pose = (*(float(v) for v in position), *matrix_rpy(turned))  # type: ignore
 
+    def add_light(self, light: LightSpec) -> None:
+        """A light spawned (spawn_sdf_model): refused when a light or a model has its name,
+        as gazebo_ros refuses it (gazebo_ros_api_plugin.cpp:2683-2694)."""
+        if light.name in self.models or any(l.name == light.name for l in self.lights):
+            raise SimError(f"a light or model named '{light.name}' exists already; delete "
+                           "it or pick another name")
+        self.lights.append(light)
+
     def delete_light(self, name: str) -> None:
         self.lights.remove(self.light(name))
 

@@ -9,7 +9,7 @@ import pytest
 from geometry_msgs.msg import Pose, Vector3
 from std_msgs.msg import ColorRGBA
 
-from gazebo_msgs.srv import DeleteLight, GetLightProperties, SetLightProperties
+from gazebo_msgs.srv import DeleteLight, GetLightProperties, SetLightProperties, SpawnModel
 from sim_bridge.ros_node import Config, SimBridgeNode
 from sim_bridge.sdf_world import load_world
 
@@ -112,3 +112,28 @@ def test_delete_light_removes_it(node):
     again = call(node, DeleteLight, node._delete_light, light_name="dusk")
     assert not again.success and again.status_message == (
         "DeleteLight: there is no light named 'dusk' (lights: sun, lamp)")
+
+
+def test_spawn_sdf_model_of_a_light_adds_it(node):
+    """spawn_sdf_model of an SDF whose first element is a <light> spawns a light
+    (:2654-2658, :2697-2705) named by the request (:2703), at its own <pose> (no
+    initial_pose for an SDF without <model>, :2427-2435); a light or model of that name
+    already there: success false (:2683-2694). Before: refused, 'no <model> in it'."""
+    xml = """<sdf version="1.6"><light name="x" type="spot"><pose>1 2 3 0 0 0</pose>
+      <diffuse>0.2 0.3 0.4 1</diffuse></light></sdf>"""
+    pose = Pose()
+    pose.position.x, pose.orientation.w = 7.0, 1.0
+    answer = call(node, SpawnModel, node._spawn_sdf, model_name="torch", model_xml=xml,
+                  robot_namespace="", initial_pose=pose, reference_frame="")
+    assert answer.success and answer.status_message.startswith(
+        "SpawnModel: Successfully spawned entity")
+    torch = node.world.light("torch")
+    assert (torch.type, torch.pose, torch.diffuse) == ("spot", (1, 2, 3, 0, 0, 0),
+                                                       (0.2, 0.3, 0.4, 1.0))
+    assert "torch" not in node.world.models
+    got = call(node, GetLightProperties, node._get_light_properties, light_name="torch")
+    assert got.success and got.diffuse.b == pytest.approx(0.4)
+    for name in ("torch", "floor"):
+        again = call(node, SpawnModel, node._spawn_sdf, model_name=name, model_xml=xml,
+                     robot_namespace="", initial_pose=pose, reference_frame="")
+        assert not again.success and "exists already" in again.status_message
