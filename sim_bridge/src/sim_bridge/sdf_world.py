@@ -721,7 +721,8 @@ def _apply_state(world: ET.Element, spec: WorldSpec, source: str) -> None:
     """A world saved from Gazebo keeps where its models are in ``<state>``, which Gazebo
     applies when it loads the world (Husky's playpen turns a barrier there: without it
     the robot spawned on top of it): each ``<state><model name><pose>`` places the model
-    of that name. Links' poses and velocities in the state are not applied. Gazebo 11 makes
+    of that name, each ``<state><light name><pose>`` the light. Links' poses and velocities in
+    the state are not applied. Gazebo 11 makes
     the world's collisions before it applies the state, so a model's planes stay where its
     own ``<pose>`` put them (``ModelSpec.plane_pose``): inferred, not read in gazebo-classic's
     source, from worlds that run there (Neobotix's workshop stands decals on their edges
@@ -734,3 +735,9 @@ def _apply_state(world: ET.Element, spec: WorldSpec, source: str) -> None:
                 if model.plane_pose is None:
                     model.plane_pose = model.pose
                 model.pose = _pose(element, f"<state> model '{model.name}'", source)
+        # a light's pose likewise (Gazebo 11's world state carries its lights' poses:
+        # gazebo-classic's LightState, unverified here)
+        for element in state.findall("light"):
+            for light in spec.lights:
+                if light.name == element.get("name", "") and element.find("pose") is not None:
+                    light.pose = _pose(element, f"<state> light '{light.name}'", source)

@@ -22,6 +22,7 @@ WORLD = """<sdf version="1.6"><world name="lit">
     <attenuation><range>20</range><linear>0.2</linear></attenuation></light>
   <model name="floor"><static>true</static><link name="link"><collision name="c">
     <geometry><plane><normal>0 0 1</normal></plane></geometry></collision></link></model>
+  <state world_name="lit"><light name="lamp"><pose>4 5 6 0 0 0</pose></light></state>
 </world></sdf>"""
 
 
@@ -41,7 +42,7 @@ def node(world, lit):
 def test_world_lights_are_read_with_sdfs_defaults(lit):
     """Every <light> of the world and every included one (model://sun), in the file's
     order, an <include>'s <name> and <pose> taking the light's place (sdformat parser.cc
-    :987-1027); what a light leaves out is SDF's default (light.sdf:13-45): the lamp's
+    :987-1027), a <state>'s <light><pose> placing it; what a light leaves out is SDF's default (light.sdf:13-45): the lamp's
     constant attenuation 1 (:35), quadratic 0 (:38), specular 0.1 (:23), no shadows (:13).
     Before: lights were read and dropped."""
     assert [light.name for light in lit.lights] == ["sun", "dusk", "lamp"]
@@ -54,6 +55,7 @@ def test_world_lights_are_read_with_sdfs_defaults(lit):
     assert (lamp.attenuation_range, lamp.attenuation_constant, lamp.attenuation_linear,
             lamp.attenuation_quadratic) == (20.0, 1.0, 0.2, 0.0)
     assert lamp.direction == (0.0, 0.0, -1.0)  # :43
+    assert lamp.pose == (4, 5, 6, 0, 0, 0)  # the world's <state> places it
     assert [model.name for model in lit.models] == ["floor"]
 
 
