@@ -50,6 +50,10 @@ def test_world_lights_are_read_with_sdfs_defaults(lit):
     assert (sun.type, sun.cast_shadows, sun.diffuse, sun.direction) == (
         "directional", True, (0.8, 0.8, 0.8, 1.0), (-0.5, 0.1, -0.9))
     assert sun.pose == (0, 0, 10, 0, 0, 0) and dusk.pose == (1, 2, 3, 0, 0, 0)
+    # the model database's sun (osrf/gazebo_models 8163eb4, sun/model.sdf), which
+    # get_light_properties reports in Gazebo
+    assert (sun.attenuation_range, sun.attenuation_constant, sun.attenuation_linear,
+            sun.attenuation_quadratic) == (1000.0, 0.9, 0.01, 0.001)
     assert (lamp.type, lamp.diffuse, lamp.specular, lamp.cast_shadows) == (
         "point", (0.5, 0.4, 0.3, 1.0), (0.1, 0.1, 0.1, 1.0), False)
     assert (lamp.attenuation_range, lamp.attenuation_constant, lamp.attenuation_linear,
