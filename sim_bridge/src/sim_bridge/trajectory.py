@@ -4,11 +4,18 @@ A trajectory starts from the joints' state when it is received and passes throug
 points at their times. Each segment is interpolated per joint by what both its ends give:
 positions only → linear; with velocities → cubic; with accelerations too → quintic.
 Times are seconds of simulated time. Pure maths: no ROS, no pybullet.
+
+The controller keeps, as Noetic's does, one list of :class:`Segment` per joint (ros_controllers
+noetic-devel 678b92a joint_trajectory_controller/include/: joint_trajectory_controller/
+joint_trajectory_segment.h, trajectory_interface/quintic_spline_segment.h ("qss"),
+trajectory_interface/trajectory_interface.h ("ti")): a segment outside its time span gives
+its nearer end's position with zero velocity and acceleration (qss:110-111, :393-407), and
+the segment that holds a time is the last one starting at or before it (ti:70-76).
 """
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import List, Optional, Sequence, Tuple
+from typing import Any, List, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -79,3 +86,73 @@ class Trajectory:
             if t <= end.time:
                 return _segment(start, end, t)
         raise AssertionError("unreachable: t is before the end time")
+
+
+@dataclass(frozen=True)
+class Tolerance:
+    """StateTolerances (tolerances.h:53-67): 0 is not checked."""
+
+    position: float = 0.0
+    velocity: float = 0.0
+    acceleration: float = 0.0
+
+    def admits(self, position_error: float, velocity_error: float,
+               acceleration_error: float = 0.0) -> bool:
+        """checkStateTolerancePerJoint (tolerances.h:168-177)."""
+        return not any(tolerance > 0.0 and abs(error) > tolerance for tolerance, error in (
+            (self.position, position_error), (self.velocity, velocity_error),
+            (self.acceleration, acceleration_error)))
+
+
+NO_TOLERANCE = Tolerance()
+
+
+@dataclass
+class Segment:
+    """One joint's stretch of a trajectory (JointTrajectorySegment): its two ends (scalars),
+    the goal it belongs to (an action goal handle, or None) and that goal's tolerances for
+    this joint: along the way (``path``), at the end (``goal``), and the time after the end
+    the goal may take (``goal_time``)."""
+
+    start: Waypoint
+    end: Waypoint
+    goal: Any = None
+    path: Tolerance = NO_TOLERANCE
+    goal_state: Tolerance = NO_TOLERANCE
+    goal_time: float = 0.0
+
+    @property
+    def start_time(self) -> float:
+        return self.start.time
+
+    @property
+    def end_time(self) -> float:
+        return self.end.time
+
+    def sample(self, t: float) -> Tuple[float, float, float]:
+        """(position, velocity, acceleration) at ``t``; outside the span, the nearer end's
+        position, still (qss:393-407)."""
+        if t < self.start.time:
+            return float(self.start.positions), 0.0, 0.0
+        if t > self.end.time:
+            return float(self.end.positions), 0.0, 0.0
+        position, velocity, acceleration = _segment(self.start, self.end, t)
+        return float(position), float(velocity), float(acceleration)
+
+
+def find_segment(segments: Sequence[Segment], t: float) -> Optional[int]:
+    """findSegment (ti:70-76): the index of the last segment starting at or before ``t``;
+    None when ``t`` is before them all."""
+    found = None
+    for index, segment in enumerate(segments):
+        if segment.start_time > t:
+            break
+        found = index
+    return found
+
+
+def sample_segments(segments: Sequence[Segment], t: float) -> Tuple[float, float, float]:
+    """The state at ``t`` (trajectory_interface's sample: before every segment, the first
+    one's start, still)."""
+    index = find_segment(segments, t)
+    return segments[0 if index is None else index].sample(t)

@@ -7,20 +7,29 @@ As ros_controllers' joint_trajectory_controller:
   (0; effort and velocity kinds); ``constraints``: ``goal_time`` (0), ``stopped_velocity_tolerance``
   (0.01), ``<joint>/goal`` and ``<joint>/trajectory`` (0: not checked); ``state_publish_rate``
   (50 Hz), ``action_monitor_rate`` (20 Hz); ``allow_partial_joints_goal`` (false);
+  ``stop_trajectory_duration`` (0);
 - ``<name>/command`` (trajectory_msgs/JointTrajectory), ``<name>/follow_joint_trajectory``
   (control_msgs/FollowJointTrajectory), ``<name>/state``
-  (control_msgs/JointTrajectoryControllerState);
-- a new trajectory replaces the current one from now on and cancels an active goal; a
-  goal succeeds once its last point's time has passed with every joint inside its goal
-  tolerance, and aborts if that has not happened ``goal_time`` later, or as soon as a
-  joint leaves its path tolerance; cancelling holds the joints where they are;
+  (control_msgs/JointTrajectoryControllerState), ``<name>/query_state``
+  (control_msgs/QueryTrajectoryState); goals and commands are refused while the controller
+  is not running;
+- the trajectory is one list of segments per joint, as Noetic's. A new one is taken at the
+  next update: each joint it names follows the current trajectory until the new one starts
+  (a future stamp) and is then bridged from the current trajectory's desired state to the
+  first point; the joints a partial goal leaves out go on with their current trajectory. A
+  new goal or command cancels the active goal;
+- tolerances per joint and segment: the path ones (position, velocity; the acceleration
+  error is always 0) while a segment of the goal runs: left, the goal aborts and the
+  trajectory goes on; the goal ones, latched per joint at or after the last segment's end,
+  with ``goal_time`` more to meet them: all met, succeeded; not in time, aborted. A cancel
+  holds where the joints are, or with ``stop_trajectory_duration`` decelerates;
 - as Noetic's initJointTrajectory (ros_controllers noetic-devel 678b92a
   joint_trajectory_controller/include/joint_trajectory_controller/init_joint_trajectory.h,
   "init" below): times must increase strictly (init:232-239); the points at or before the
   next update are dropped (init:321-363; a first point at time_from_start 0 without a stamp
   is one), and a trajectory left with none is refused with Noetic's "Dropping all N
   trajectory point(s), …" (init:336-342); a continuous joint's new trajectory is shifted by
-  whole turns to start within pi of its current position (init:431-440,
+  whole turns to start within pi of its desired position (init:431-440,
   joint_trajectory_segment.h:222-243);
 - the position error of a revolute or continuous joint is the shortest angle from the actual
   to the desired position (joint_trajectory_controller_impl.h:782); a prismatic joint's is
@@ -39,21 +48,26 @@ hardware_interface_adapter.h:170-175, :210; the PIDs reset when the controller s
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import List, Optional
 
 import numpy as np
 from control_msgs.msg import (FollowJointTrajectoryAction, FollowJointTrajectoryFeedback,
                               FollowJointTrajectoryResult, JointTrajectoryControllerState)
+from control_msgs.srv import QueryTrajectoryState, QueryTrajectoryStateResponse
 from trajectory_msgs.msg import JointTrajectory, JointTrajectoryPoint
 
 from sim_bridge.plugins.base import PluginError, Rate, stamp
 from sim_bridge.ros_control.controller_base import Controller
 from sim_bridge.ros_control.pid import Pid
-from sim_bridge.trajectory import Trajectory, Waypoint
+from sim_bridge.trajectory import (NO_TOLERANCE, Segment, Tolerance, Waypoint, find_segment,
+                                   sample_segments)
 
 # initJointTrajectory's refusal of a point whose sizes do not agree (init:395-397, :477-488),
 # the goal's error_string (impl:548-552, :630-634)
 SIZE_MISMATCH = "Size mismatch in trajectory point position, velocity or acceleration data."
+# getSegmentTolerances' default goal velocity tolerance (tol:298-299), rad/s
+STOPPED_VELOCITY_TOLERANCE = 0.01
 
 Result = FollowJointTrajectoryResult
 
@@ -72,13 +86,18 @@ class JointTrajectoryController(Controller):
             raise PluginError(f"controller '{name}': 'joints' must be a list of joint names")
         self.claim([str(j) for j in joints])
         self.allow_partial = bool(self.params.get("allow_partial_joints_goal", False))
+        # getSegmentTolerances (tol:290-314): the path's position tolerance, the goal's
+        # position and velocity (stopped_velocity_tolerance) ones, goal_time
         constraints = self.params.get("constraints", {}) or {}
-        self.goal_time = float(constraints.get("goal_time", 0.0))
-        self.stopped_velocity = float(constraints.get("stopped_velocity_tolerance", 0.01))
-        self.default_goal = np.array([float((constraints.get(j) or {}).get("goal", 0.0))
-                                      for j in self.joints])
-        self.default_path = np.array([float((constraints.get(j) or {}).get("trajectory", 0.0))
-                                      for j in self.joints])
+        stopped_velocity = float(constraints.get("stopped_velocity_tolerance",
+                                                 STOPPED_VELOCITY_TOLERANCE))
+        self.default_path = [Tolerance(float((constraints.get(j) or {}).get("trajectory", 0.0)))
+                             for j in self.joints]
+        self.default_goal = [Tolerance(float((constraints.get(j) or {}).get("goal", 0.0)),
+                                       stopped_velocity) for j in self.joints]
+        self.default_goal_time = float(constraints.get("goal_time", 0.0))
+        # impl:229-231, :320-327: > 0, holding decelerates along a stop trajectory
+        self.stop_duration = self.number("stop_trajectory_duration", 0.0)
         self.pids: Optional[List[Pid]] = None
         self.velocity_ff = np.zeros(len(self.joints))
         if self.interface in ("effort", "velocity"):
@@ -101,11 +120,16 @@ class JointTrajectoryController(Controller):
         self._server = bus.action_server(io.topic(f"{name}/follow_joint_trajectory"),
                                          FollowJointTrajectoryAction, self._on_goal,
                                          self._on_cancel)
-        self.trajectory: Optional[Trajectory] = None
-        self.goal = None  # the active actionlib goal handle
-        self.goal_tolerance = self.default_goal
-        self.path_tolerance = self.default_path
-        self.goal_time_tolerance = self.goal_time
+        self._query_service = bus.service(io.topic(f"{name}/query_state"), QueryTrajectoryState,
+                                          self._on_query)
+        n = len(self.joints)
+        # the trajectory followed: one list of segments per joint (curr_trajectory_box_)
+        self.segments: List[List[Segment]] = []
+        self.goal = None  # the active actionlib goal handle (rt_active_goal_)
+        self.successful = np.zeros(n, dtype=bool)  # successful_joint_traj_ (impl:315)
+        # desired_state_ at the last update: where a stop trajectory starts (impl:326)
+        self.desired = (np.zeros(n), np.zeros(n), np.zeros(n))
+        self.running = False
         self._pending: Optional[JointTrajectory] = None
         self.now_ns = 0
         self.period_ns = int(round(hardware.step_size * 1e9))
@@ -116,14 +140,24 @@ class JointTrajectoryController(Controller):
 
     # --- incoming trajectories ------------------------------------------------------------
     def _on_command(self, message: JointTrajectory) -> None:
-        """rospy's thread: keep it for the next update (a topic command cancels a goal)."""
+        """rospy's thread: keep it for the next update (a topic command cancels a goal);
+        refused while the controller is not running (impl:488-495)."""
+        if not self.running:
+            self.io.bus.warn(f"{self.name}/command: Can't accept new commands. Controller is "
+                             "not running.")
+            return
         self._pending = message
 
     def _on_goal(self, handle) -> None:
-        """Physics thread (posted by the bus)."""
+        """goalCB (impl:565-636), in the physics thread (posted by the bus)."""
         goal = handle.get_goal()
+        if not self.running:  # impl:571-579
+            self.io.bus.warn(f"{self.name}: Can't accept new action goals. Controller is not "
+                             "running.")
+            handle.set_rejected(Result(error_code=Result.INVALID_GOAL), "")
+            return
         try:
-            trajectory = self._build(goal.trajectory, self.now_ns)
+            segments = self._build(goal.trajectory, self.now_ns, handle, goal)
         except TrajectoryRefused as refusal:
             self.io.bus.warn(f"{self.name}: goal refused: {refusal}")
             handle.set_rejected(Result(error_code=refusal.code, error_string=str(refusal)),
@@ -132,13 +166,13 @@ class JointTrajectoryController(Controller):
         self._cancel_active("replaced by a new goal")
         handle.set_accepted()
         self.goal = handle
-        self.goal_tolerance = self._tolerances(goal.goal_tolerance, self.default_goal)
-        self.path_tolerance = self._tolerances(goal.path_tolerance, self.default_path)
-        requested = goal.goal_time_tolerance.to_sec()
-        self.goal_time_tolerance = requested if requested > 0 else self.goal_time
-        self.trajectory = trajectory
+        # Noetic clears these latches only on success or abort (impl:413, :451, :465), so a
+        # preempted goal's latches would count for the next one: each goal starts over here
+        self.successful[:] = False
+        self.segments = segments
 
     def _on_cancel(self, handle) -> None:
+        """cancelCB (impl:638-660): hold (or stop, with stop_trajectory_duration)."""
         if self.goal is not None and handle.get_goal_id().id == self.goal.get_goal_id().id:
             self._hold(self.now_ns)
             self.goal.set_canceled(Result(error_code=Result.SUCCESSFUL,
@@ -150,17 +184,30 @@ class JointTrajectoryController(Controller):
             self.goal.set_canceled(Result(error_code=Result.SUCCESSFUL, error_string=why), why)
             self.goal = None
 
-    def _tolerances(self, given, defaults: np.ndarray) -> np.ndarray:
-        tolerances = defaults.copy()
-        for tolerance in given:
-            if tolerance.name in self.joints and tolerance.position != 0:
-                tolerances[self.joints.index(tolerance.name)] = \
-                    tolerance.position if tolerance.position > 0 else 0.0
-        return tolerances
+    def _tolerances(self, goal):
+        """updateSegmentTolerances (tol:231-267) on the defaults: per joint, a value > 0
+        sets, < 0 resets to 0 (not checked), 0 keeps; goal_time_tolerance < 0 is 0, > 0 that
+        time, 0 the default."""
+        path, goal_state = list(self.default_path), list(self.default_goal)
+        for given, tolerances in ((goal.path_tolerance, path),
+                                  (goal.goal_tolerance, goal_state)):
+            for tolerance in given:
+                if tolerance.name in self.joints:
+                    k = self.joints.index(tolerance.name)
+                    tolerances[k] = _updated(tolerances[k], tolerance)
+        requested = goal.goal_time_tolerance.to_sec()
+        goal_time = (0.0 if requested < 0 else requested if requested > 0
+                     else self.default_goal_time)
+        return path, goal_state, goal_time
 
-    def _build(self, message: JointTrajectory, now_ns: int) -> Trajectory:
-        """initJointTrajectory, with ``now_ns`` the last update: the trajectory is taken at
-        the next one (impl:508-509, :538)."""
+    def _build(self, message: JointTrajectory, now_ns: int, handle=None,
+               goal=None) -> List[List[Segment]]:
+        """updateTrajectoryCommand and initJointTrajectory (impl:479-563, init:203-520), with
+        ``now_ns`` the last update: the new trajectory is taken at the next one (impl:508-512).
+        Joints it names follow the current trajectory until it starts (or until the next
+        update), then a segment from the current trajectory's state there, the desired one,
+        to its first point (init:411-461); joints it leaves out (a partial goal) keep the
+        current trajectory, from now on belonging to this goal (init:371-387)."""
         names = list(message.joint_names)
         unknown = [n for n in names if n not in self.joints]
         if unknown or len(set(names)) != len(names):
@@ -170,24 +217,23 @@ class JointTrajectoryController(Controller):
             raise TrajectoryRefused(Result.INVALID_JOINTS,
                                     f"the goal names {names}; this controller needs all of "
                                     f"{self.joints} (allow_partial_joints_goal is false)")
+        if not message.points:  # impl:514-520: hold, the goal taken
+            return self._hold_segments(now_ns, handle)
         order = [names.index(j) if j in names else None for j in self.joints]
-        positions, velocities, _ = self._current()
         times = [p.time_from_start.to_nsec() for p in message.points]
         if any(a >= b for a, b in zip(times, times[1:])):  # init:232-239, msg:119-134
             raise TrajectoryRefused(Result.INVALID_GOAL, "Trajectory message contains "
                                     "waypoints that are not strictly increasing in time.")
         next_ns = now_ns + self.period_ns
         start_ns = message.header.stamp.to_nsec() or next_ns  # msg:69-73
-        kept = {k for k, t in enumerate(times) if start_ns + t > next_ns}  # msg:150-166
-        if times and not kept:  # init:333-343
+        kept = [k for k, t in enumerate(times) if start_ns + t > next_ns]  # msg:150-166
+        if not kept:  # init:333-343
             past = (next_ns - (start_ns + times[-1])) / 1e9
             raise TrajectoryRefused(Result.INVALID_GOAL, (
                 f"Dropping all {len(times)} trajectory point(s), as they occur before the "
                 f"current time.\nLast point is {past:f}s in the past."))
-        points = []
-        for number, point in enumerate(message.points):
-            if number not in kept:
-                continue
+        points = [message.points[k] for k in kept]
+        for number, point in zip(kept, points):
             for field in ("positions", "velocities", "accelerations"):
                 values = getattr(point, field)
                 if values and len(values) != len(names):  # init:395-397, :477-488
@@ -197,20 +243,42 @@ class JointTrajectoryController(Controller):
                                             f"point {number} has a {field[:-1]} that is not finite")
             if not point.positions:
                 raise TrajectoryRefused(Result.INVALID_GOAL, f"point {number} has no positions")
-            points.append(Waypoint(
+        n = len(self.joints)
+        if goal is not None:  # a topic command's segments carry no tolerances (init:460, :493)
+            path, goal_state, goal_time = self._tolerances(goal)
+        else:
+            path, goal_state, goal_time = [NO_TOLERANCE] * n, [NO_TOLERANCE] * n, 0.0
+        next_time = next_ns / 1e9
+        bridge_time = max(start_ns / 1e9, next_time)  # init:417 ("Important!")
+        result = []
+        for k, current in enumerate(self.segments):
+            active = find_segment(current, next_time)
+            active = 0 if active is None else active
+            i = order[k]
+            if i is None:
+                result.append(current[:active] +
+                              [replace(segment, goal=handle) for segment in current[active:]])
+                continue
+            last = find_segment(current, bridge_time)
+            position, velocity, acceleration = sample_segments(current, bridge_time)
+            bridge = Waypoint(bridge_time, np.float64(position), np.float64(velocity),
+                              np.float64(acceleration))
+            offset = 0.0
+            if self.wraparound[k]:  # init:431-440, from the desired state
+                offset = float(wraparound_offset(position, points[0].positions[i]))
+            waypoints = [Waypoint(
                 (start_ns + point.time_from_start.to_nsec()) / 1e9,
-                self._full(point.positions, order, positions),
-                self._full(point.velocities, order, np.zeros(len(self.joints)))
-                if point.velocities else None,
-                self._full(point.accelerations, order, np.zeros(len(self.joints)))
-                if point.accelerations else None))
-        if points:  # the wraparound offset of continuous joints (init:431-440)
-            offset = np.where(self.wraparound,
-                              wraparound_offset(positions, points[0].positions), 0.0)
-            for point in points:
-                point.positions = point.positions + offset
-        return Trajectory(Waypoint(now_ns / 1e9, positions, velocities, np.zeros_like(positions)),
-                          points)
+                np.float64(point.positions[i] + offset),
+                np.float64(point.velocities[i]) if point.velocities else None,
+                np.float64(point.accelerations[i]) if point.accelerations else None)
+                for point in points]
+            tolerances = dict(goal=handle, path=path[k], goal_state=goal_state[k],
+                              goal_time=goal_time)
+            joint = current[active:(active if last is None else last) + 1]
+            joint.append(Segment(bridge, waypoints[0], **tolerances))
+            joint.extend(Segment(a, b, **tolerances) for a, b in zip(waypoints, waypoints[1:]))
+            result.append(joint)
+        return result
 
     def _error(self, desired: np.ndarray, actual: np.ndarray) -> np.ndarray:
         """state_error_.position (impl:782): shortest_angular_distance(actual, desired) for
@@ -218,53 +286,84 @@ class JointTrajectoryController(Controller):
         return np.where(self.angular, shortest_angular_distance(actual, desired),
                         desired - actual)
 
-    @staticmethod
-    def _full(values, order, fallback) -> np.ndarray:
-        return np.array([values[i] if i is not None else fallback[k]
-                         for k, i in enumerate(order)], dtype=float)
-
     # --- the control loop -----------------------------------------------------------------
     def _current(self):
         indices = [self.hardware.names.index(j) for j in self.joints]
         return (self.hardware.positions[indices].copy(), self.hardware.velocities[indices].copy(),
                 self.hardware.efforts[indices].copy())
 
+    def _hold_segments(self, now_ns: int, handle=None) -> List[List[Segment]]:
+        """setHoldPosition (impl:738-748): HoldTrajectoryBuilder, the joints' positions,
+        still (hold_trajectory_builder.h:81-108); with stop_trajectory_duration d > 0,
+        StopTrajectoryBuilder (stop_trajectory_builder.h:97-139): from the desired state
+        (p, v) to the middle of the quintic from (p, v, 0) to (p, -v, 0) over 2 d, reached in
+        d. The hold trajectory's segments carry no tolerances."""
+        t = now_ns / 1e9
+        result = []
+        if self.stop_duration == 0.0:
+            positions, _, _ = self._current()
+            for position in positions:
+                state = Waypoint(t, np.float64(position), np.float64(0.0), np.float64(0.0))
+                result.append([Segment(state, state, goal=handle)])
+            return result
+        for position, velocity in zip(self.desired[0], self.desired[1]):
+            begin = Waypoint(t, np.float64(position), np.float64(velocity), np.float64(0.0))
+            turned = Waypoint(t + 2 * self.stop_duration, np.float64(position),
+                              np.float64(-velocity), np.float64(0.0))
+            middle = Segment(begin, turned).sample(t + self.stop_duration)
+            stop = Waypoint(t + self.stop_duration, *(np.float64(x) for x in middle))
+            result.append([Segment(begin, stop, goal=handle)])
+        return result
+
     def _hold(self, now_ns: int) -> None:
-        positions, _, _ = self._current()
-        self.trajectory = Trajectory(Waypoint(now_ns / 1e9, positions), [])
+        self.segments = self._hold_segments(now_ns)
+
+    def _sample(self, t: float):
+        states = np.array([sample_segments(segments, t) for segments in self.segments])
+        return states[:, 0].copy(), states[:, 1].copy(), states[:, 2].copy()
 
     def start(self, now_ns):
+        """starting (impl:131-156): the desired state is the current one, held."""
         self.now_ns = now_ns
+        positions, velocities, _ = self._current()
+        self.desired = (positions, velocities, np.zeros_like(positions))
         self._hold(now_ns)
         for pid in self.pids or []:  # hia:180-190
             pid.reset()
         self.state_rate.reset(now_ns)
         self.feedback_rate.reset(now_ns)
+        self.running = True
 
     def stop(self, now_ns):
+        self.running = False
         self._cancel_active("the controller was stopped")
 
     def update(self, now_ns, dt):
+        """update (impl:345-477)."""
         self.now_ns = now_ns
         self.period_ns = int(round(dt * 1e9))
         if self._pending is not None:
             message, self._pending = self._pending, None
             try:
-                self.trajectory = self._build(message, now_ns)
+                self.segments = self._build(message, now_ns)
                 self._cancel_active("replaced by a trajectory on the command topic")
-                self.goal_tolerance, self.path_tolerance = self.default_goal, self.default_path
             except TrajectoryRefused as refusal:
                 self.io.bus.warn(f"{self.name}/command: trajectory ignored: {refusal}")
         t = now_ns / 1e9
-        desired, desired_velocity, _ = self.trajectory.sample(t)
+        desired, desired_velocity, desired_acceleration = self._sample(t)
+        self.desired = (desired, desired_velocity, desired_acceleration)
         actual, actual_velocity, _ = self._current()
         error = self._error(desired, actual)
-        self._command(desired, desired_velocity, error, desired_velocity - actual_velocity, dt)
+        velocity_error = desired_velocity - actual_velocity
         if self.goal is not None:
-            self._monitor(t, error, actual_velocity, desired, desired_velocity, actual)
+            self._check_tolerances(t, error, velocity_error)
+        self._command(desired, desired_velocity, error, velocity_error, dt)
+        if self.goal is not None and self.feedback_rate.due(now_ns):
+            self.goal.publish_feedback(self._state(FollowJointTrajectoryFeedback, now_ns,
+                                                   actual, actual_velocity))
         if self.state_rate.due(now_ns):
-            self.state_out.publish(self._state(JointTrajectoryControllerState, now_ns, desired,
-                                               desired_velocity, actual, actual_velocity))
+            self.state_out.publish(self._state(JointTrajectoryControllerState, now_ns, actual,
+                                               actual_velocity))
 
     def _command(self, desired, desired_velocity, error, velocity_error, dt):
         for k, joint in enumerate(self.joints):
@@ -275,46 +374,67 @@ class JointTrajectoryController(Controller):
                 handle.command = float(self.velocity_ff[k] * desired_velocity[k] +
                                        self.pids[k].command(error[k], velocity_error[k], dt))
 
-    def _monitor(self, t, error, actual_velocity, desired, desired_velocity, actual):
-        path = self.path_tolerance
-        outside_path = (path > 0) & (np.abs(error) > path)
-        if np.any(outside_path):
-            joint = self.joints[int(np.argmax(outside_path))]
-            text = f"joint '{joint}' left its path tolerance"
-            self._hold(self.now_ns)
-            self.goal.set_aborted(Result(error_code=Result.PATH_TOLERANCE_VIOLATED,
-                                         error_string=text), text)
-            self.goal = None
-            return
-        if self.feedback_rate.due(self.now_ns):
-            self.goal.publish_feedback(self._state(FollowJointTrajectoryFeedback, self.now_ns,
-                                                   desired, desired_velocity, actual,
-                                                   actual_velocity))
-        end = self.trajectory.end_time
-        if t < end:
-            return
-        goal = self.goal_tolerance
-        final_error = self._error(self.trajectory.goal, actual)
-        inside = np.all((goal <= 0) | (np.abs(final_error) <= goal))
-        stopped = self.stopped_velocity <= 0 or np.all(np.abs(actual_velocity) <=
-                                                       self.stopped_velocity)
-        if inside and stopped:
+    def _check_tolerances(self, t, error, velocity_error):
+        """impl:373-466, joint by joint, on the segment each follows when it belongs to the
+        active goal: before its end, the path tolerance (violated: the goal aborted, "<joint>
+        path error <e>", the trajectory goes on); at or after the end of the last, the goal
+        tolerance, latched per joint once met; not met ``goal_time`` after the end: aborted,
+        "<joint> goal error <e>". The acceleration error is always 0 (impl:784). Every joint's
+        latch set: succeeded."""
+        for k, joint in enumerate(self.joints):
+            if self.goal is None:
+                return
+            segments = self.segments[k]
+            index = find_segment(segments, t)
+            if index is None:
+                continue
+            segment = segments[index]
+            if segment.goal is not self.goal:
+                continue
+            if t < segment.end_time:
+                if not segment.path.admits(error[k], velocity_error[k]):
+                    self._abort(Result.PATH_TOLERANCE_VIOLATED, f"{joint} path error {error[k]:f}")
+            elif index == len(segments) - 1:
+                if segment.goal_state.admits(error[k], velocity_error[k]):
+                    self.successful[k] = True
+                elif t >= segment.end_time + segment.goal_time:
+                    self._abort(Result.GOAL_TOLERANCE_VIOLATED,
+                                f"{joint} goal error {error[k]:f}")
+        if self.goal is not None and np.all(self.successful):
             self.goal.set_succeeded(Result(error_code=Result.SUCCESSFUL), "goal reached")
             self.goal = None
-        elif t > end + self.goal_time_tolerance:
-            worst = self.joints[int(np.argmax(np.abs(final_error)))]
-            text = (f"joint '{worst}' is {float(np.max(np.abs(final_error))):.4f} from its goal "
-                    f"{self.goal_time_tolerance:g} s after the trajectory's end")
-            self.goal.set_aborted(Result(error_code=Result.GOAL_TOLERANCE_VIOLATED,
-                                         error_string=text), text)
-            self.goal = None
+            self.successful[:] = False
 
-    def _state(self, message_class, now_ns, desired, desired_velocity, actual, actual_velocity):
+    def _abort(self, code: int, text: str) -> None:
+        self.goal.set_aborted(Result(error_code=code, error_string=text), text)
+        self.goal = None
+        self.successful[:] = False
+
+    def _on_query(self, request) -> QueryTrajectoryStateResponse:
+        """queryStateService (impl:662-708): the trajectory followed, sampled at the
+        request's time; refused while the controller is not running or before the
+        trajectory's start."""
+        if not self.running:
+            raise PluginError(f"{self.name}: Can't sample trajectory. Controller is not running.")
+        t = request.time.to_sec()
+        if any(find_segment(segments, t) is None for segments in self.segments):
+            raise PluginError(f"{self.name}: Requested sample time precedes trajectory start "
+                              "time.")
+        positions, velocities, accelerations = self._sample(t)
+        return QueryTrajectoryStateResponse(name=list(self.joints), position=positions.tolist(),
+                                            velocity=velocities.tolist(),
+                                            acceleration=accelerations.tolist())
+
+    def _state(self, message_class, now_ns, actual, actual_velocity):
+        """publishState and setActionFeedback (impl:710-736, :796-819): desired (with its
+        accelerations), actual, error."""
+        desired, desired_velocity, desired_acceleration = self.desired
         message = message_class()
         message.header.stamp = stamp(now_ns)
         message.joint_names = list(self.joints)
         message.desired = JointTrajectoryPoint(positions=desired.tolist(),
-                                               velocities=desired_velocity.tolist())
+                                               velocities=desired_velocity.tolist(),
+                                               accelerations=desired_acceleration.tolist())
         message.actual = JointTrajectoryPoint(positions=actual.tolist(),
                                               velocities=actual_velocity.tolist())
         message.error = JointTrajectoryPoint(
@@ -326,6 +446,16 @@ class JointTrajectoryController(Controller):
         self._cancel_active("the controller was unloaded")
         self._subscription.unregister()
         self.state_out.unregister()
+        self._query_service.shutdown()
+
+
+def _updated(tolerance: Tolerance, given) -> Tolerance:
+    """updateStateTolerances (tol:211-222): > 0 sets, < 0 resets to 0, 0 keeps."""
+    def one(old: float, new: float) -> float:
+        return new if new > 0 else 0.0 if new < 0 else old
+    return Tolerance(one(tolerance.position, given.position),
+                     one(tolerance.velocity, given.velocity),
+                     one(tolerance.acceleration, given.acceleration))
 
 
 def shortest_angular_distance(start, end):
