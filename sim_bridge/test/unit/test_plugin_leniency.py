@@ -1,5 +1,7 @@
 """A plugin that cannot run as written is left out with a warning naming it and the cause,
 and the model spawns, as Gazebo loads it; nothing the plugin opened stays behind."""
+from controller_manager_msgs.srv import ListControllersRequest, LoadControllerRequest
+
 from world_fixtures import run
 
 BASE = """<link name="base"><inertial><mass value="1"/>
@@ -36,11 +38,24 @@ def test_a_plugin_naming_joints_the_model_lacks_is_skipped_and_the_rest_runs(wor
     assert bus.published["/ground_truth"]
 
 
-def test_ros_control_without_transmissions_warns_and_serves_no_controller_manager(world, bus):
+def test_ros_control_without_transmissions_serves_a_controller_manager_with_no_joint(world,
+                                                                                    bus):
+    """No <transmission> at all: Noetic's plugin takes the empty list (gazebo_ros_pkgs
+    noetic-devel f9e1a46 gazebo_ros_control_plugin.cpp:300-304) and its controller manager
+    serves no joint: a joint state controller loads, a controller naming a joint does not.
+    Before: no controller manager."""
     world.spawn_urdf("r", NO_TRANSMISSION, (0, 0, 0.1))
     assert "r" in world.models
     assert any("gazebo_ros_control" in w and "<transmission>" in w for w in bus.warnings)
-    assert not [name for name in bus.services if "controller_manager" in name]
+    bus.params.update({"/r/states": {"type": "joint_state_controller/JointStateController",
+                                     "publish_rate": 50},
+                       "/r/arm": {"type": "position_controllers/JointTrajectoryController",
+                                  "joints": ["base"]}})
+    load = bus.services["/r/controller_manager/load_controller"]
+    assert load(LoadControllerRequest("states")).ok
+    assert not load(LoadControllerRequest("arm")).ok
+    listed = bus.services["/r/controller_manager/list_controllers"](ListControllersRequest())
+    assert [c.name for c in listed.controller] == ["states"]
 
 
 def test_a_deleted_model_with_a_skipped_plugin_leaves_the_world_consistent(world, bus):

@@ -13,7 +13,8 @@ the running controllers are stopped and started again, gazebo_ros_control_plugin
 :222-251, :307-310, default_robot_hw_sim.cpp:287-300, :315, :359-375; controller_manager.cpp:
 70-78).
 
-Joints are the ones with a ``<transmission>`` (see :mod:`.hardware`). Controllers are
+Joints are the ones with a ``<transmission>`` (see :mod:`.hardware`; a robot with none gets a
+controller manager with no joint, as Noetic's). Controllers are
 configured on the parameter server, under ``<namespace>/<name>`` with a ``type``, and loaded,
 started, stopped and unloaded through controller_manager's services under
 ``<namespace>/controller_manager/`` — what ``rosrun controller_manager spawner`` calls — which
@@ -121,9 +122,11 @@ class RosControl(Plugin):
         super().__init__(context, spec)
         transmissions = context.robot.model.transmissions
         if not transmissions:
-            raise PluginError(f"plugin '{spec.name}' (libgazebo_ros_control.so): model "
-                              f"'{context.model_name}' has no <transmission>, so no joint to "
-                              "control")
+            # Noetic's parseTransmissionsFromURDF takes none as a success (plugin:300-304) and
+            # DefaultRobotHWSim registers no joint: the controller manager serves none
+            context.bus.warn(f"plugin '{spec.name}' (libgazebo_ros_control.so): model "
+                             f"'{context.model_name}' has no <transmission>: its controller "
+                             "manager serves no joint")
         self.hardware = RobotHardware(context, transmissions, self.namespace)
         self.param("robotParam")  # the spawned model's own description is used
         sim_type = self.param("robotSimType", DEFAULT_SIM_TYPE)
