@@ -64,6 +64,21 @@ def diff_bot(start=True, e_stop=False, bus_class=RecordingBus, **params):
     return world, bus, model
 
 
+def load_only(**params):
+    """Whether a DiffDriveController with ``params`` loads on diff_bot, and the warnings."""
+    controller = {"type": "diff_drive_controller/DiffDriveController",
+                  "left_wheel": "left_wheel_joint", "right_wheel": "right_wheel_joint"}
+    controller.update(params)
+    bus = RecordingBus({CONTROLLER: controller})
+    world = World(bus, ray_threads=1)
+    world.spawn_urdf("bot", expand(f"{DATA}/diff_bot.urdf.xacro", {"drive": "ros_control"}),
+                     namespace="")
+    loaded = bus.services[f"{MANAGER}/load_controller"](
+        LoadControllerRequest("base_controller")).ok
+    world.close()
+    return loaded, bus.warnings
+
+
 def switch(bus):
     assert bus.services[f"{MANAGER}/switch_controller"](
         SwitchControllerRequest(start_controllers=["base_controller"], strictness=2)).ok
@@ -357,16 +372,10 @@ def test_a_nan_command_is_ignored_with_noetics_words():
 
 def test_unequal_wheel_lists_do_not_load():
     """DDC:182-188: as many left wheels as right ones, or the controller does not load."""
-    bus = RecordingBus({CONTROLLER: {"type": "diff_drive_controller/DiffDriveController",
-                                     "left_wheel": ["left_wheel_joint"],
-                                     "right_wheel": ["right_wheel_joint", "left_wheel_joint"]}})
-    world = World(bus, ray_threads=1)
-    world.spawn_urdf("bot", expand(f"{DATA}/diff_bot.urdf.xacro", {"drive": "ros_control"}),
-                     namespace="")
-    assert not bus.services[f"{MANAGER}/load_controller"](
-        LoadControllerRequest("base_controller")).ok
-    assert any("#left wheels (1) != #right wheels (2)." in w for w in bus.warnings)
-    world.close()
+    loaded, warnings = load_only(left_wheel=["left_wheel_joint"],
+                                 right_wheel=["right_wheel_joint", "left_wheel_joint"])
+    assert not loaded
+    assert any("#left wheels (1) != #right wheels (2)." in w for w in warnings)
 
 
 # --- what it publishes ---------------------------------------------------------------------
@@ -449,3 +458,29 @@ def test_covariances_are_the_diagonals_given():
     assert [message.twist.covariance[i * 7] for i in range(6)] == twist
     assert sum(message.twist.covariance) == pytest.approx(sum(twist))
     world.close()
+
+
+@pytest.mark.parametrize("given, diagonal", [
+    (None, [0.0] * 6),
+    ([0.1, 0.2], [0.1, 0.2, 0.0, 0.0, 0.0, 0.0]),
+    ([0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7], [0.1, 0.2, 0.3, 0.4, 0.5, 0.6]),
+])
+def test_a_covariance_list_short_or_absent_reads_zeros_for_what_is_missing(given, diagonal):
+    """DDC:692-717 with its ROS_ASSERTs compiled out (a release build): the first six
+    entries through XmlRpcValue, whose missing entries read 0.0 (ros_comm noetic-devel
+    845f746 XmlRpcValue.cpp:81-118). Before: a list of other than six refused the load."""
+    params = {} if given is None else {"pose_covariance_diagonal": given}
+    world, bus, model = diff_bot(**params)
+    message = bus.last(f"{CONTROLLER}/odom")
+    assert [message.pose.covariance[i * 7] for i in range(6)] == diagonal
+    world.close()
+
+
+@pytest.mark.parametrize("given", [[0.001, 0.001, 1000000, 1e6, 1e6, 0.03], 0.1])
+def test_a_covariance_entry_not_a_double_fails_the_load(given):
+    """XmlRpcValue throws on an int (or a scalar for a list), and controller_manager fails
+    the load (controller_manager.cpp:323-333). Before: taken."""
+    loaded, warnings = load_only(twist_covariance_diagonal=given)
+    assert not loaded
+    assert any("Exception thrown while initializing controller 'base_controller'" in w
+               for w in warnings)

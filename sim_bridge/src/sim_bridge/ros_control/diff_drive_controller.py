@@ -11,7 +11,7 @@ or ``left_wheel_radius_multiplier`` and ``right_wheel_radius_multiplier`` (1),
 ``publish_rate`` (50 Hz), ``open_loop`` (false), ``velocity_rolling_window_size`` (10),
 ``cmd_vel_timeout`` (0.5 s), ``allow_multiple_cmd_vel_publishers`` (true), ``base_frame_id``
 (base_link), ``odom_frame_id`` (odom), ``enable_odom_tf`` (true),
-``pose_covariance_diagonal``, ``twist_covariance_diagonal`` (6 numbers each),
+``pose_covariance_diagonal``, ``twist_covariance_diagonal`` (6 doubles each; zeros when absent),
 ``linear/x/...`` and ``angular/z/...`` limits (see :class:`SpeedLimiter`), ``publish_cmd``
 (false), ``publish_wheel_joint_controller_state`` (false).
 
@@ -44,6 +44,10 @@ NAN_COMMAND = "Received NaN in velocity command. Ignoring."
 NOT_RUNNING = "Can't accept new commands. Controller is not running."
 # ROS_*_THROTTLE periods of those messages (s)
 MESSAGE_THROTTLE = 1.0
+# a load that throws (ros_control noetic-devel 633c374 controller_manager.cpp:326-333)
+INIT_EXCEPTION = "Exception thrown while initializing controller '{}'"
+# x, y, z, roll, pitch, yaw: the diagonal of a 6 x 6 covariance
+COVARIANCE_ENTRIES = 6
 
 
 def _joint_list(value, what: str, name: str):
@@ -144,12 +148,24 @@ class DiffDriveController(Controller):
                           "first <collision>); give wheel_radius")
 
     def _diagonal(self, key: str):
-        values = self.params.get(key, [0.0] * 6)
-        if not isinstance(values, list) or len(values) != 6:
-            raise PluginError(f"controller '{self.name}': '{key}' must be 6 numbers")
-        matrix = [0.0] * 36
+        """setOdomPubFields (DDC:689-728) as Noetic's released build runs it: its ROS_ASSERTs
+        on the list's type and size are compiled out (NDEBUG), so the first six entries are
+        read through XmlRpcValue, which makes an absent list or missing entries 0.0 and
+        throws on anything but a double (ros_comm noetic-devel 845f746 utilities/xmlrpcpp/
+        src/XmlRpcValue.cpp:81-118, include/xmlrpcpp/XmlRpcValue.h:93, :106): an int, a
+        string or a scalar fails the load (controller_manager.cpp:323-333)."""
+        values = self.params.get(key, [])
+        if not isinstance(values, list):
+            raise PluginError(f"{INIT_EXCEPTION.format(self.name)}: '{key}' is not a list "
+                              f"(XmlRpc type error)")
+        values = values[:COVARIANCE_ENTRIES]
+        values += [0.0] * (COVARIANCE_ENTRIES - len(values))
+        matrix = [0.0] * (COVARIANCE_ENTRIES * COVARIANCE_ENTRIES)
         for i, value in enumerate(values):
-            matrix[i * 7] = float(value)
+            if not isinstance(value, float):  # a double in XmlRpc; bool and int are not
+                raise PluginError(f"{INIT_EXCEPTION.format(self.name)}: '{key}' entry {i} is "
+                                  f"{value!r}, not a double (XmlRpc type error)")
+            matrix[i * (COVARIANCE_ENTRIES + 1)] = value
         return matrix
 
     def _limiter(self, group: str, axis: str) -> SpeedLimiter:
