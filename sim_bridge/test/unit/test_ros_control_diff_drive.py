@@ -41,9 +41,10 @@ class CountingBus(RecordingBus):
         return handle
 
 
-def diff_bot(start=True, e_stop=False, bus_class=RecordingBus, **params):
+def diff_bot(start=True, e_stop=False, bus_class=RecordingBus, edit=None, **params):
     """diff_bot on wheel transmissions with a DiffDriveController with ``params``, loaded
-    (and started) before the first step, then settled on the ground."""
+    (and started) before the first step, then settled on the ground. ``edit``: (old, new)
+    text replaced in the robot's description."""
     controller = {"type": "diff_drive_controller/DiffDriveController",
                   "left_wheel": "left_wheel_joint", "right_wheel": "right_wheel_joint"}
     controller.update(params)
@@ -55,6 +56,9 @@ def diff_bot(start=True, e_stop=False, bus_class=RecordingBus, **params):
     if e_stop:
         assert PLUGIN in urdf
         urdf = urdf.replace(PLUGIN, E_STOP_PLUGIN)
+    if edit is not None:
+        assert edit[0] in urdf
+        urdf = urdf.replace(*edit)
     model = world.spawn_urdf("bot", urdf, namespace="")
     load = bus.services[f"{MANAGER}/load_controller"]
     assert load(LoadControllerRequest("base_controller")).ok, bus.warnings
@@ -64,15 +68,19 @@ def diff_bot(start=True, e_stop=False, bus_class=RecordingBus, **params):
     return world, bus, model
 
 
-def load_only(**params):
-    """Whether a DiffDriveController with ``params`` loads on diff_bot, and the warnings."""
+def load_only(edit=None, **params):
+    """Whether a DiffDriveController with ``params`` loads on diff_bot (its description
+    with ``edit``, (old, new), replaced), and the warnings."""
     controller = {"type": "diff_drive_controller/DiffDriveController",
                   "left_wheel": "left_wheel_joint", "right_wheel": "right_wheel_joint"}
     controller.update(params)
     bus = RecordingBus({CONTROLLER: controller})
     world = World(bus, ray_threads=1)
-    world.spawn_urdf("bot", expand(f"{DATA}/diff_bot.urdf.xacro", {"drive": "ros_control"}),
-                     namespace="")
+    urdf = expand(f"{DATA}/diff_bot.urdf.xacro", {"drive": "ros_control"})
+    if edit is not None:
+        assert edit[0] in urdf
+        urdf = urdf.replace(*edit)
+    world.spawn_urdf("bot", urdf, namespace="")
     loaded = bus.services[f"{MANAGER}/load_controller"](
         LoadControllerRequest("base_controller")).ok
     world.close()
@@ -232,6 +240,47 @@ def test_the_separation_multiplier_scales_the_turn_the_wheels_make():
     assert base(world)[2] - start[2] == pytest.approx(0.8, abs=0.03)
     assert odometry(bus)[2] == pytest.approx(0.4, abs=0.025)  # published at 50 Hz
     world.close()
+
+
+LEFT_WHEEL_JOINT = ('<joint name="left_wheel_joint" type="continuous">\n'
+                    '    <parent link="base_link"/>\n'
+                    '    <child link="left_wheel"/>\n'
+                    '    <origin xyz="0 0.17 -0.03"/>')  # as expanded
+# the same wheel, 0.17 m out, on a hub 0.07 m out: its joint's origin is 0.1 m from the hub
+LEFT_WHEEL_ON_A_HUB = (
+    '<link name="left_hub"><inertial><mass value="0.1"/>'
+    '<inertia ixx="1e-5" ixy="0" ixz="0" iyy="1e-5" iyz="0" izz="1e-5"/></inertial></link>'
+    '<joint name="left_hub_joint" type="fixed"><parent link="base_link"/>'
+    '<child link="left_hub"/><origin xyz="0 0.07 0"/></joint>'
+    '<joint name="left_wheel_joint" type="continuous">'
+    '<parent link="left_hub"/><child link="left_wheel"/><origin xyz="0 0.1 -0.03"/>')
+
+
+def test_the_separation_from_the_urdf_is_between_the_wheel_joints_origins_as_written():
+    """DDC:661-674: the distance between the two joints' origins, each in its own parent
+    link's frame. A left wheel hung 0.1 m out on a hub 0.07 m out gives 0.27 m (the wheels
+    are 0.34 m apart): a turn at 1 rad/s turns the base at 0.27/0.34 of it, while the
+    odometry, dividing by the same 0.27, says 1 rad/s. Before: 0.34 m, the links' distance."""
+    world, bus, model = diff_bot(edit=(LEFT_WHEEL_JOINT, LEFT_WHEEL_ON_A_HUB),
+                                 publish_rate=1000.0)
+    start = base(world)
+    drive_for(world, bus, 0.5, 0.0, 1.0, every=0.25)
+    assert base(world)[2] - start[2] == pytest.approx(0.5 * 0.27 / SEPARATION, abs=0.02)
+    assert odometry(bus)[2] == pytest.approx(0.5, abs=0.01)
+    world.close()
+
+
+def test_the_radius_from_the_urdf_is_the_wheels_first_collisions():
+    """DDC:128-143, :676-684: the left wheel link's first <collision> (urdfdom's
+    link->collision) must be a cylinder or a sphere; a box before the cylinder fails the
+    load, naming the link. Before: the first cylinder or sphere among them was taken."""
+    box_first = ('<link name="left_wheel">', '<link name="left_wheel"><collision><geometry>'
+                 '<box size="0.01 0.01 0.01"/></geometry></collision>')
+    loaded, warnings = load_only(edit=box_first)
+    assert not loaded
+    assert any("Wheel link left_wheel is NOT modeled as a cylinder or sphere!" in w
+               for w in warnings)
+    assert load_only(edit=box_first, wheel_radius=0.05)[0]
 
 
 # --- the speed limiter ---------------------------------------------------------------------
