@@ -63,3 +63,21 @@ def test_after_a_reset_a_joint_no_controller_commands_holds_its_reset_pose():
     run(world, 1.0)
     assert angles(model, "finger_joint")[0] == pytest.approx(0.01, abs=1e-3)
     world.close()
+
+
+def test_after_a_reset_a_trajectory_is_sampled_the_whole_time_further_on():
+    """The controllers' period after a reset is the time since time 0 (plugin:220, :264),
+    and the trajectory controller's uptime advances by it (joint_trajectory_controller_impl.h:
+    357-361): 1 s into a 4 s move of pan to 1.0 (0.25 there), a reset sends the trajectory
+    about 1 s on, to 0.5, which pan reaches at once. Before: the trajectory went on from
+    0.25."""
+    world, bus, model = arm()
+    start(bus, "arm_controller")
+    on_goal, _ = bus.actions["/arm_bot/arm_controller/follow_joint_trajectory"]
+    on_goal(GoalHandle(goal_to([1.0, 0.0], 4.0)))
+    run(world, 1.0)
+    assert angles(model, "pan")[0] == pytest.approx(0.25, abs=0.01)
+    world.reset()
+    run(world, 0.04)
+    assert angles(model, "pan")[0] == pytest.approx(0.51, abs=0.02)
+    world.close()

@@ -148,7 +148,15 @@ class RosControl(Plugin):
             log(f"Desired controller update period ({_duration(period)} s) is {how} than the "
                 f"gazebo simulation period ({_duration(context.step_size)} s).")
         self.rate = Rate(1.0 / period if period > context.step_size else 0.0)
-        self.period = max(period, context.step_size)
+        # last_update_sim_time_ros_ and last_write_sim_time_ros_ (plugin:220, :227, :256-257):
+        # the controllers' period is the time since their last update and writeSim's the
+        # time since the last write; both start at time 0, and Reset sets them back to it.
+        # Gazebo advances its time before WorldUpdateBegin (gazebo-classic World.cc:813-815,
+        # read on the elysia-best/gazebo-classic mirror): the plugin's time is the end of
+        # the step that before_step starts
+        self.step_ns = int(round(context.step_size * 1e9))
+        self.last_update_ns = 0
+        self.last_write_ns = 0
         self.io = ControllerIO(context.bus, self.namespace, context.robot)
         self.controllers: Dict[str, Loaded] = {}
         self.now_ns = 0
@@ -278,10 +286,14 @@ class RosControl(Plugin):
         controllers' update (the running ones stopped and started again first when the
         emergency stop was released since the last update, plugin:233-251, CM:70-78);
         every step, writeSim with the commands they last gave (a torque lasts one pybullet
-        step, as Gazebo's SetForce does) or the emergency stop's."""
+        step, as Gazebo's SetForce does) or the emergency stop's. Each gets the time since
+        it last ran as its period (plugin:220, :230, :251, :256)."""
         self.now_ns = now_ns
         e_stop = self.e_stop
+        gazebo_ns = now_ns + self.step_ns
         if self.rate.due(now_ns):
+            period = (gazebo_ns - self.last_update_ns) / 1e9
+            self.last_update_ns = gazebo_ns
             self.hardware.read()
             released = self._e_stopped_last_update and not e_stop
             self._e_stopped_last_update = e_stop
@@ -290,17 +302,23 @@ class RosControl(Plugin):
                     if released:
                         loaded.controller.stop(now_ns)
                         loaded.controller.start(now_ns)
-                    loaded.controller.update(now_ns, self.period)
-        self.hardware.write(self.context.step_size, e_stop=e_stop)
+                    loaded.controller.update(now_ns, period)
+        write_period = (gazebo_ns - self.last_write_ns) / 1e9
+        self.last_write_ns = gazebo_ns
+        self.hardware.write(write_period, e_stop=e_stop)
 
     def reset(self, now_ns: int) -> None:
         """After reset_world, reset_simulation or new joint positions: as Noetic's Reset
         (plugin:261-266), only the timers start over: the next step updates the controllers,
         which go on running with their last commands (a position-controlled arm is driven
-        back to where it was commanded). Joints no running controller commands hold where
-        they now are, as after the spawn."""
+        back to where it was commanded), with the time since time 0 as their period, and
+        the next write likewise (Noetic sets both last times to 0 "to not pass negative
+        update periods"). Joints no running controller commands hold where they now are, as
+        after the spawn."""
         self.now_ns = now_ns
         self.rate.reset(now_ns)
+        self.last_update_ns = 0
+        self.last_write_ns = 0
         commanded = [joint for loaded in self.controllers.values()
                      if loaded.state == "running" and loaded.controller.interface
                      for joint in loaded.controller.joints]

@@ -131,8 +131,11 @@ class JointTrajectoryController(Controller):
         self.desired = (np.zeros(n), np.zeros(n), np.zeros(n))
         self.running = False
         self._pending: Optional[JointTrajectory] = None
+        # time_data_ (impl:354-361): the last update's time and period, and the uptime, the
+        # sum of the periods since the controller started, which the segments' times count in
         self.now_ns = 0
         self.period_ns = int(round(hardware.step_size * 1e9))
+        self.uptime = 0.0
         types = [hardware.joints[j].joint_type for j in self.joints]
         # angle_wraparound_ (impl:268-269); the error wraps for revolute joints too (impl:782)
         self.wraparound = np.array([t == "continuous" for t in types])
@@ -157,7 +160,7 @@ class JointTrajectoryController(Controller):
             handle.set_rejected(Result(error_code=Result.INVALID_GOAL), "")
             return
         try:
-            segments = self._build(goal.trajectory, self.now_ns, handle, goal)
+            segments = self._build(goal.trajectory, handle, goal)
         except TrajectoryRefused as refusal:
             self.io.bus.warn(f"{self.name}: goal refused: {refusal}")
             handle.set_rejected(Result(error_code=refusal.code, error_string=str(refusal)),
@@ -174,7 +177,7 @@ class JointTrajectoryController(Controller):
     def _on_cancel(self, handle) -> None:
         """cancelCB (impl:638-660): hold (or stop, with stop_trajectory_duration)."""
         if self.goal is not None and handle.get_goal_id().id == self.goal.get_goal_id().id:
-            self._hold(self.now_ns)
+            self._hold()
             self.goal.set_canceled(Result(error_code=Result.SUCCESSFUL,
                                           error_string="cancelled"), "cancelled")
             self.goal = None
@@ -200,10 +203,10 @@ class JointTrajectoryController(Controller):
                      else self.default_goal_time)
         return path, goal_state, goal_time
 
-    def _build(self, message: JointTrajectory, now_ns: int, handle=None,
-               goal=None) -> List[List[Segment]]:
-        """updateTrajectoryCommand and initJointTrajectory (impl:479-563, init:203-520), with
-        ``now_ns`` the last update: the new trajectory is taken at the next one (impl:508-512).
+    def _build(self, message: JointTrajectory, handle=None, goal=None) -> List[List[Segment]]:
+        """updateTrajectoryCommand and initJointTrajectory (impl:479-563, init:203-520): the
+        new trajectory is taken at the next update (impl:508-512); its times are moved from
+        simulated time into the uptime (init:254-270).
         Joints it names follow the current trajectory until it starts (or until the next
         update), then a segment from the current trajectory's state there, the desired one,
         to its first point (init:411-461); joints it leaves out (a partial goal) keep the
@@ -218,13 +221,13 @@ class JointTrajectoryController(Controller):
                                     f"the goal names {names}; this controller needs all of "
                                     f"{self.joints} (allow_partial_joints_goal is false)")
         if not message.points:  # impl:514-520: hold, the goal taken
-            return self._hold_segments(now_ns, handle)
+            return self._hold_segments(handle)
         order = [names.index(j) if j in names else None for j in self.joints]
         times = [p.time_from_start.to_nsec() for p in message.points]
         if any(a >= b for a, b in zip(times, times[1:])):  # init:232-239, msg:119-134
             raise TrajectoryRefused(Result.INVALID_GOAL, "Trajectory message contains "
                                     "waypoints that are not strictly increasing in time.")
-        next_ns = now_ns + self.period_ns
+        next_ns = self.now_ns + self.period_ns
         start_ns = message.header.stamp.to_nsec() or next_ns  # msg:69-73
         kept = [k for k, t in enumerate(times) if start_ns + t > next_ns]  # msg:150-166
         if not kept:  # init:333-343
@@ -248,8 +251,9 @@ class JointTrajectoryController(Controller):
             path, goal_state, goal_time = self._tolerances(goal)
         else:
             path, goal_state, goal_time = [NO_TOLERANCE] * n, [NO_TOLERANCE] * n, 0.0
-        next_time = next_ns / 1e9
-        bridge_time = max(start_ns / 1e9, next_time)  # init:417 ("Important!")
+        next_time = self.uptime + self.period_ns / 1e9  # next_update_uptime (impl:512)
+        message_start = next_time + (start_ns - next_ns) / 1e9  # o_msg_start_time (init:262)
+        bridge_time = max(message_start, next_time)  # init:417 ("Important!")
         result = []
         for k, current in enumerate(self.segments):
             active = find_segment(current, next_time)
@@ -267,7 +271,7 @@ class JointTrajectoryController(Controller):
             if self.wraparound[k]:  # init:431-440, from the desired state
                 offset = float(wraparound_offset(position, points[0].positions[i]))
             waypoints = [Waypoint(
-                (start_ns + point.time_from_start.to_nsec()) / 1e9,
+                message_start + point.time_from_start.to_sec(),
                 np.float64(point.positions[i] + offset),
                 np.float64(point.velocities[i]) if point.velocities else None,
                 np.float64(point.accelerations[i]) if point.accelerations else None)
@@ -292,13 +296,13 @@ class JointTrajectoryController(Controller):
         return (self.hardware.positions[indices].copy(), self.hardware.velocities[indices].copy(),
                 self.hardware.efforts[indices].copy())
 
-    def _hold_segments(self, now_ns: int, handle=None) -> List[List[Segment]]:
+    def _hold_segments(self, handle=None) -> List[List[Segment]]:
         """setHoldPosition (impl:738-748): HoldTrajectoryBuilder, the joints' positions,
         still (hold_trajectory_builder.h:81-108); with stop_trajectory_duration d > 0,
         StopTrajectoryBuilder (stop_trajectory_builder.h:97-139): from the desired state
         (p, v) to the middle of the quintic from (p, v, 0) to (p, -v, 0) over 2 d, reached in
         d. The hold trajectory's segments carry no tolerances."""
-        t = now_ns / 1e9
+        t = self.uptime
         result = []
         if self.stop_duration == 0.0:
             positions, _, _ = self._current()
@@ -315,19 +319,21 @@ class JointTrajectoryController(Controller):
             result.append([Segment(begin, stop, goal=handle)])
         return result
 
-    def _hold(self, now_ns: int) -> None:
-        self.segments = self._hold_segments(now_ns)
+    def _hold(self) -> None:
+        self.segments = self._hold_segments()
 
     def _sample(self, t: float):
         states = np.array([sample_segments(segments, t) for segments in self.segments])
         return states[:, 0].copy(), states[:, 1].copy(), states[:, 2].copy()
 
     def start(self, now_ns):
-        """starting (impl:131-156): the desired state is the current one, held."""
+        """starting (impl:131-156): the uptime starts at 0; the desired state is the current
+        one, held."""
         self.now_ns = now_ns
+        self.uptime = 0.0
         positions, velocities, _ = self._current()
         self.desired = (positions, velocities, np.zeros_like(positions))
-        self._hold(now_ns)
+        self._hold()
         for pid in self.pids or []:  # hia:180-190
             pid.reset()
         self.state_rate.reset(now_ns)
@@ -339,17 +345,21 @@ class JointTrajectoryController(Controller):
         self._cancel_active("the controller was stopped")
 
     def update(self, now_ns, dt):
-        """update (impl:345-477)."""
-        self.now_ns = now_ns
-        self.period_ns = int(round(dt * 1e9))
+        """update (impl:345-477): the uptime advances by the period the controller manager
+        gives (after a reset_world, the whole simulated time: the trajectory followed is
+        sampled that much further on, as Noetic's)."""
+        # a command taken in this update was timed from the last one (impl:505-512)
         if self._pending is not None:
             message, self._pending = self._pending, None
             try:
-                self.segments = self._build(message, now_ns)
+                self.segments = self._build(message)
                 self._cancel_active("replaced by a trajectory on the command topic")
             except TrajectoryRefused as refusal:
                 self.io.bus.warn(f"{self.name}/command: trajectory ignored: {refusal}")
-        t = now_ns / 1e9
+        self.now_ns = now_ns
+        self.period_ns = int(round(dt * 1e9))
+        self.uptime += dt
+        t = self.uptime
         desired, desired_velocity, desired_acceleration = self._sample(t)
         self.desired = (desired, desired_velocity, desired_acceleration)
         actual, actual_velocity, _ = self._current()
@@ -416,7 +426,7 @@ class JointTrajectoryController(Controller):
         trajectory's start."""
         if not self.running:
             raise PluginError(f"{self.name}: Can't sample trajectory. Controller is not running.")
-        t = request.time.to_sec()
+        t = self.uptime + (request.time.to_nsec() - self.now_ns) / 1e9  # impl:674-677
         if any(find_segment(segments, t) is None for segments in self.segments):
             raise PluginError(f"{self.name}: Requested sample time precedes trajectory start "
                               "time.")
