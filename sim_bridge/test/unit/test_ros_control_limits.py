@@ -224,3 +224,19 @@ def test_joint_limits_jerk_limits_are_read_and_used_by_no_handle():
     run(world, 0.1)
     assert spin(model)[1] == pytest.approx(1.5, abs=0.01)
     world.close()
+
+
+def test_joint_limits_soft_limit_parameters_are_not_read_by_gazebo_ros_control():
+    """DefaultRobotHWSim takes soft limits from the URDF's <safety_controller> only
+    (hw_sim:408-421); joint_limits/<joint>/has_soft_limits, k_position, soft_lower_limit,
+    soft_upper_limit (JLI joint_limits_rosparam.h:194-230) are never asked for: soft limits
+    of [-0.1, 0.1] there leave a 1 rad command to reach 1 rad."""
+    limits = {"/spinner/joint_limits/spin": {
+        "has_soft_limits": True, "k_position": 10.0, "k_velocity": 10.0,
+        "soft_lower_limit": -0.1, "soft_upper_limit": 0.1}}
+    world, bus, model = spinner("position", params=limits, joint_type="revolute",
+                                limit='<limit lower="-3" upper="3" effort="50" velocity="2.0"/>')
+    command(bus, 1.0)
+    run(world, 1.5)
+    assert spin(model)[0] == pytest.approx(1.0, abs=1e-3)
+    world.close()
