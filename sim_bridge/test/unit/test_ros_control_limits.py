@@ -240,3 +240,52 @@ def test_joint_limits_soft_limit_parameters_are_not_read_by_gazebo_ros_control()
     run(world, 1.5)
     assert spin(model)[0] == pytest.approx(1.0, abs=1e-3)
     world.close()
+
+
+SAFETY = '<safety_controller k_position="{k_position}" k_velocity="{k_velocity}" ' \
+         'soft_lower_limit="-0.5" soft_upper_limit="0.5"/>'
+HARD = '<limit lower="-1.2" upper="1.2" effort="50" velocity="2.0"/>'
+
+
+@pytest.mark.parametrize("interface, value", [("position", 1.0), ("velocity", 1.0),
+                                              ("effort", 5.0)])
+def test_a_safety_controller_holds_the_joint_at_its_soft_limit(interface, value):
+    """A URDF <safety_controller> (getSoftJointLimits, JLI joint_limits_urdf.h:84-97) makes
+    DefaultRobotHWSim register the soft-limits handle of the joint's interface instead of the
+    saturation handle (hw_sim:420-421, :456-482): the velocity allowed is -k_position times
+    the distance past a soft limit, within ±max_velocity (JLI joint_limits_interface.h
+    :203-219, :493-506); the position handle moves the command at most that far each write
+    (:221-237), the velocity handle clamps the command to it (:516), the effort handle clamps
+    the effort to -k_velocity times the velocity's excess (:379-391). A command past the soft
+    upper limit 0.5 ends at 0.5 (before: at the command, or at the hard limit 1.2)."""
+    world, bus, model = spinner(interface, joint_type="revolute",
+                                limit=HARD + SAFETY.format(k_position=5.0, k_velocity=2.0))
+    command(bus, value)
+    run(world, 3.0)
+    position, velocity = spin(model)
+    assert position == pytest.approx(0.5, abs=0.01)
+    assert velocity == pytest.approx(0.0, abs=0.02)
+    world.close()
+
+
+def test_inside_its_soft_limits_a_position_joint_moves_as_the_velocity_limit_allows():
+    """Far from the soft limits the bound is ±max_velocity (the distance times k_position is
+    larger): a step from 0 to -0.2 rad (0.3 rad inside the soft lower limit, 1.5 rad/s
+    allowed there) takes 0.1 s at 2 rad/s, as the plain saturation would (passes with either
+    handle: a check that the soft handle does not slow the joint where it should not)."""
+    world, bus, model = spinner("position", joint_type="revolute",
+                                limit=HARD + SAFETY.format(k_position=5.0, k_velocity=2.0))
+    command(bus, -0.2)
+    run(world, 0.05)
+    assert -0.105 <= spin(model)[0] <= -0.07  # the command at -0.1, the joint a few ms behind
+    run(world, 0.15)
+    assert spin(model)[0] == pytest.approx(-0.2, abs=2e-3)
+    world.close()
+
+
+def test_a_safety_controller_without_k_velocity_is_a_urdf_error_naming_it():
+    """urdfdom requires k_velocity (parseJointSafety); urdf_parser_py does too."""
+    from urdf_tools.model import UrdfError, parse_urdf
+    with pytest.raises(UrdfError, match="k_velocity"):
+        parse_urdf(spinner_urdf("position", joint_type="revolute",
+                                limit=HARD + '<safety_controller k_position="5"/>'))

@@ -133,6 +133,17 @@ class Limit:
 
 
 @dataclass(frozen=True)
+class SafetyController:
+    """A ``<safety_controller>``: soft position limits and the gains that keep a joint
+    inside them (urdfdom's JointSafety; ros_control reads it as SoftJointLimits)."""
+
+    k_velocity: float
+    k_position: float = 0.0
+    soft_lower_limit: float = 0.0
+    soft_upper_limit: float = 0.0
+
+
+@dataclass(frozen=True)
 class Mimic:
     """A ``<mimic>``: the joint's position is ``multiplier`` * ``joint``'s + ``offset``."""
 
@@ -153,6 +164,7 @@ class Joint:
     damping: float = 0.0
     friction: float = 0.0
     mimic: Optional[Mimic] = None
+    safety: Optional[SafetyController] = None
 
     @property
     def movable(self) -> bool:
@@ -492,9 +504,17 @@ def _joint(joint, source: str) -> Joint:
             [1.0 if joint.mimic.multiplier is None else joint.mimic.multiplier,
              joint.mimic.offset or 0.0], f"joint '{name}' mimic (multiplier offset)", source)
         mimic = Mimic(joint.mimic.joint, multiplier, offset)
+    safety = None
+    if joint.safety_controller is not None:
+        controller = joint.safety_controller
+        safety = SafetyController(*_finite(
+            [controller.k_velocity, controller.k_position or 0.0,
+             controller.soft_lower_limit or 0.0, controller.soft_upper_limit or 0.0],
+            f"joint '{name}' safety_controller (k_velocity k_position soft_lower_limit "
+            "soft_upper_limit)", source))
     return Joint(name, joint.type, joint.parent, joint.child,
                  _origin(joint.origin, f"joint '{name}'", source), axis, limit, damping,
-                 friction, mimic)
+                 friction, mimic, safety)
 
 
 def _transmission(element: ET.Element) -> Transmission:

@@ -156,6 +156,28 @@ class JointLimits:
     angle_wraparound: bool = False
 
 
+@dataclass
+class SoftJointLimits:
+    """joint_limits_interface::SoftJointLimits (JLI joint_limits.h), from the URDF's
+    ``<safety_controller>`` only: getSoftJointLimits (JLI joint_limits_urdf.h:84-97);
+    DefaultRobotHWSim never reads them from the parameter server (hw_sim:408-426)."""
+
+    min_position: float
+    max_position: float
+    k_position: float
+    k_velocity: float
+
+
+def urdf_soft_limits(joint) -> Optional[SoftJointLimits]:
+    """getSoftJointLimits(urdf_joint, soft_limits) (JLI joint_limits_urdf.h:84-97): None
+    when the joint has no ``<safety_controller>``."""
+    safety = getattr(joint, "safety", None)
+    if safety is None:
+        return None
+    return SoftJointLimits(safety.soft_lower_limit, safety.soft_upper_limit,
+                           safety.k_position, safety.k_velocity)
+
+
 def urdf_limits(joint, limits: JointLimits) -> bool:
     """getJointLimits(urdf_joint, limits) (JLI joint_limits_urdf.h:48-76): False when the
     joint has no ``<limit>``."""
@@ -232,6 +254,9 @@ class JointHandle:
     effort_limit: float
     # the limits of its saturation handle; None: no handle (a joint with no limits)
     limits: Optional[JointLimits] = None
+    # a <safety_controller>'s: the soft-limits handle replaces the saturation one
+    # (hw_sim:456-482)
+    soft: Optional[SoftJointLimits] = None
     command: float = 0.0
     # the handles' prev_cmd_: position (NaN until the first write), velocity (0.0)
     previous: float = math.nan
@@ -261,9 +286,13 @@ class JointHandle:
         return _saturate(effort, -self.effort_limit, self.effort_limit)
 
     def saturate(self, position: float, velocity: float, period: float) -> None:
-        """The saturation handle's enforceLimits on ``command`` (hw_sim:302-307)."""
+        """The saturation handle's enforceLimits on ``command`` (hw_sim:302-307), or the
+        soft-limits handle's when the joint has a ``<safety_controller>``."""
         limits = self.limits
         if limits is None:
+            return
+        if self.soft is not None:
+            self._enforce_soft_limits(position, velocity, period)
             return
         if self.interface == "position":  # PositionJointSaturationHandle (JLI :91-112)
             if math.isnan(self.previous):
@@ -295,6 +324,48 @@ class JointHandle:
                 high = 0.0
             self.command = _saturate(self.command, low, high)
 
+    def _soft_velocity_bounds(self, position: float, max_velocity: float) -> Tuple[float, float]:
+        """The velocities the soft limits allow at ``position``: -k_position times the
+        distance past each soft limit, within ±max_velocity; no position limits (a
+        continuous joint): ±max_velocity (JLI joint_limits_interface.h:203-219, :360-376,
+        :493-506)."""
+        if not self.limits.has_position_limits:
+            return -max_velocity, max_velocity
+        soft = self.soft
+        return (_saturate(-soft.k_position * (position - soft.min_position),
+                          -max_velocity, max_velocity),
+                _saturate(-soft.k_position * (position - soft.max_position),
+                          -max_velocity, max_velocity))
+
+    def _enforce_soft_limits(self, position: float, velocity: float, period: float) -> None:
+        limits = self.limits
+        if self.interface == "position":  # PositionJointSoftLimitsHandle (JLI :188-241)
+            if math.isnan(self.previous):
+                self.previous = position
+            low_velocity, high_velocity = self._soft_velocity_bounds(self.previous,
+                                                                     limits.max_velocity)
+            low = self.previous + low_velocity * period
+            high = self.previous + high_velocity * period
+            if limits.has_position_limits:  # a soft limit beyond the hard one (:226-231)
+                low, high = max(low, limits.min_position), min(high, limits.max_position)
+            self.command = _saturate(self.command, low, high)
+            self.previous = self.command
+        elif self.interface == "velocity":  # VelocityJointSoftLimitsHandle (JLI :488-517)
+            max_velocity = limits.max_velocity if limits.has_velocity_limits else math.inf
+            low, high = self._soft_velocity_bounds(position, max_velocity)
+            if limits.has_acceleration_limits:
+                step = limits.max_acceleration * period
+                low, high = max(velocity - step, low), min(velocity + step, high)
+            self.command = _saturate(self.command, low, high)
+        else:  # EffortJointSoftLimitsHandle (JLI :348-392)
+            low_velocity, high_velocity = self._soft_velocity_bounds(position,
+                                                                     limits.max_velocity)
+            low = _saturate(-self.soft.k_velocity * (velocity - low_velocity),
+                            -limits.max_effort, limits.max_effort)
+            high = _saturate(-self.soft.k_velocity * (velocity - high_velocity),
+                             -limits.max_effort, limits.max_effort)
+            self.command = _saturate(self.command, low, high)
+
     def reset_saturation(self) -> None:
         """PositionJointSaturationHandle::reset (JLI :117-119): the next write starts from
         where the joint is. Velocity: from standing still."""
@@ -318,7 +389,12 @@ class RobotHardware:
             effort = (limits.max_effort if limits is not None and limits.has_effort_limits
                       else UNLIMITED)  # hw_sim:404, :453-454
             handle = JointHandle(joint, robot.joint_index[joint], interface,
-                                 description.type, effort, limits)
+                                 description.type, effort, limits,
+                                 soft=urdf_soft_limits(description) if limits else None)
+            if handle.soft is not None and interface == "position" \
+                    and not limits.has_velocity_limits:  # JLI :172-176
+                raise PluginError(f"Cannot enforce limits for joint '{joint}'. It has no "
+                                  "velocity limits specification.")
             if limits is not None and limits.has_position_limits:  # hw_sim:448-452
                 handle.lower_limit = limits.min_position
                 handle.upper_limit = limits.max_position
