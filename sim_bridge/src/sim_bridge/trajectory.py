@@ -26,6 +26,9 @@ class Waypoint:
     positions: np.ndarray
     velocities: Optional[np.ndarray] = None
     accelerations: Optional[np.ndarray] = None
+    # the trajectory point's time_from_start, s (a state sampled from a trajectory: 0, as
+    # trajectory_interface's PosVelAccState, pos_vel_acc_state.h:67)
+    time_from_start: float = 0.0
 
 
 def _segment(start: Waypoint, end: Waypoint, t: float) -> Tuple[np.ndarray, np.ndarray, np.ndarray]:

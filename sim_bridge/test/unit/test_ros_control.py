@@ -129,6 +129,31 @@ def test_trajectory_goal_reaches_its_positions_within_a_hundredth_of_a_radian():
     world.close()
 
 
+def test_the_state_carries_the_time_from_start_of_the_segment_followed():
+    """updateStates (ros_controllers noetic-devel 678b92a joint_trajectory_controller_impl.h
+    :786-792, published :725-731): desired.time_from_start is the followed segment's start
+    point's (quintic_spline_segment.h:228; the bridge from the current state starts at a
+    sampled state's 0), actual that plus the time since the segment began, error desired
+    minus actual. Before: all three 0."""
+    world, bus, model = arm()
+    start(bus, "joint_state_controller", "arm_controller")
+    trajectory = JointTrajectory(joint_names=["pan", "lift"], points=[
+        JointTrajectoryPoint(positions=[0.5, 0.2], time_from_start=genpy.Duration(1.0)),
+        JointTrajectoryPoint(positions=[1.0, 0.5], time_from_start=genpy.Duration(2.0))])
+    on_goal, _ = bus.actions["/arm_bot/arm_controller/follow_joint_trajectory"]
+    on_goal(GoalHandle(FollowJointTrajectoryGoal(trajectory=trajectory)))
+    run(world, 0.5)  # on the bridge from the arm's state to the first point
+    state = bus.last("/arm_bot/arm_controller/state")
+    assert state.desired.time_from_start.to_sec() == 0.0
+    assert state.actual.time_from_start.to_sec() == pytest.approx(0.5, abs=0.05)
+    run(world, 1.0)  # between the two points: the segment that starts at 1 s
+    state = bus.last("/arm_bot/arm_controller/state")
+    assert state.desired.time_from_start.to_sec() == pytest.approx(1.0)
+    assert state.actual.time_from_start.to_sec() == pytest.approx(1.5, abs=0.05)
+    assert state.error.time_from_start.to_sec() == pytest.approx(-0.5, abs=0.05)
+    world.close()
+
+
 def load(bus, name):
     return bus.services[f"{MANAGER}/load_controller"](LoadControllerRequest(name)).ok
 

@@ -49,8 +49,9 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
-from typing import List, Optional
+from typing import List, Optional, Tuple
 
+import genpy
 import numpy as np
 from control_msgs.msg import (FollowJointTrajectoryAction, FollowJointTrajectoryFeedback,
                               FollowJointTrajectoryResult, JointTrajectoryControllerState)
@@ -129,6 +130,8 @@ class JointTrajectoryController(Controller):
         self.successful = np.zeros(n, dtype=bool)  # successful_joint_traj_ (impl:315)
         # desired_state_ at the last update: where a stop trajectory starts (impl:326)
         self.desired = (np.zeros(n), np.zeros(n), np.zeros(n))
+        # the state's desired, actual and error time_from_start (impl:786-792)
+        self.times_from_start = (0.0, 0.0, 0.0)
         self.running = False
         self._pending: Optional[JointTrajectory] = None
         # time_data_ (impl:354-361): the last update's time and period, and the uptime, the
@@ -274,7 +277,8 @@ class JointTrajectoryController(Controller):
                 message_start + point.time_from_start.to_sec(),
                 np.float64(point.positions[i] + offset),
                 np.float64(point.velocities[i]) if point.velocities else None,
-                np.float64(point.accelerations[i]) if point.accelerations else None)
+                np.float64(point.accelerations[i]) if point.accelerations else None,
+                point.time_from_start.to_sec())
                 for point in points]
             tolerances = dict(goal=handle, path=path[k], goal_state=goal_state[k],
                               goal_time=goal_time)
@@ -362,6 +366,7 @@ class JointTrajectoryController(Controller):
         t = self.uptime
         desired, desired_velocity, desired_acceleration = self._sample(t)
         self.desired = (desired, desired_velocity, desired_acceleration)
+        self.times_from_start = self._times_from_start(t)
         actual, actual_velocity, _ = self._current()
         error = self._error(desired, actual)
         velocity_error = desired_velocity - actual_velocity
@@ -374,6 +379,18 @@ class JointTrajectoryController(Controller):
         if self.state_rate.due(now_ns):
             self.state_out.publish(self._state(JointTrajectoryControllerState, now_ns, actual,
                                                actual_velocity))
+
+    def _times_from_start(self, t: float) -> Tuple[float, float, float]:
+        """updateStates' time_from_start (impl:786-792), from the first joint's segment at
+        ``t``: desired, the segment's start point's time_from_start (quintic_spline_segment.h
+        :228; a bridge or hold segment starts at a sampled state's 0); actual, that plus the
+        time since the segment's start; error, desired minus actual."""
+        segments = self.segments[0]
+        index = find_segment(segments, t)
+        segment = segments[0 if index is None else index]
+        desired = segment.start.time_from_start
+        actual = t - segment.start_time + desired
+        return desired, actual, desired - actual
 
     def _command(self, desired, desired_velocity, error, velocity_error, dt):
         for k, joint in enumerate(self.joints):
@@ -450,6 +467,9 @@ class JointTrajectoryController(Controller):
         message.error = JointTrajectoryPoint(
             positions=self._error(desired, actual).tolist(),
             velocities=(desired_velocity - actual_velocity).tolist())
+        for point, seconds in zip((message.desired, message.actual, message.error),
+                                  self.times_from_start):
+            point.time_from_start = genpy.Duration.from_sec(seconds)
         return message
 
     def close(self):
