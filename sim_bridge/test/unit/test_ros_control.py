@@ -357,6 +357,14 @@ def test_manager_refuses_what_it_cannot_do_and_lists_the_rest():
     # an effort controller on position joints
     assert not load(LoadControllerRequest("effort_arm_controller")).ok
     assert any("EffortJointInterface" in w for w in bus.warnings)
+    # a pos_vel trajectory controller: a type of ros_controllers whose interface
+    # DefaultRobotHWSim does not register, refused in controller_interface's words
+    # (controller.h:108-115), as under Gazebo
+    bus.params["/arm_bot/pos_vel_controller"] = {
+        "type": "pos_vel_controllers/JointTrajectoryController", "joints": ["pan", "lift"]}
+    assert not load(LoadControllerRequest("pos_vel_controller")).ok
+    assert any("requires a hardware interface of type "
+               "'hardware_interface::PosVelJointInterface'" in w for w in bus.warnings)
     start(bus, "arm_controller")
     assert not bus.services[f"{MANAGER}/unload_controller"](
         UnloadControllerRequest("arm_controller")).ok  # running

@@ -70,6 +70,17 @@ CONTROLLER_TYPES = {
     "effort_controllers/JointGroupPositionController": GroupEffortPositionController,
     "diff_drive_controller/DiffDriveController": DiffDriveController,
 }
+# ros_controllers' types (noetic-devel 678b92a joint_trajectory_controller/
+# joint_trajectory_controller_plugins.xml, src/joint_trajectory_controller.cpp:69-95) whose
+# hardware interface DefaultRobotHWSim never registers (only the effort, position and velocity
+# joint interfaces, gazebo_ros_control default_robot_hw_sim.cpp:153-186): under Gazebo they
+# load and their initRequest fails (ros_control 633c374 controller_interface/controller.h
+# :108-115), so the controller is not loaded
+UNREGISTERED_INTERFACES = {
+    "pos_vel_controllers/JointTrajectoryController": "hardware_interface::PosVelJointInterface",
+    "pos_vel_acc_controllers/JointTrajectoryController":
+        "hardware_interface::PosVelAccJointInterface",
+}
 INTERFACE_NAMES = {"position": "hardware_interface/PositionJointInterface",
                    "velocity": "hardware_interface/VelocityJointInterface",
                    "effort": "hardware_interface/EffortJointInterface"}
@@ -185,6 +196,14 @@ class RosControl(Plugin):
                                   f"'{path}/type' (load the controllers' yaml first)")
             return LoadControllerResponse(False)
         controller_class = CONTROLLER_TYPES.get(params["type"])
+        if params["type"] in UNREGISTERED_INTERFACES:
+            self.context.bus.warn(
+                f"controller_manager: cannot load '{name}': This controller requires a "
+                f"hardware interface of type '{UNREGISTERED_INTERFACES[params['type']]}'. Make "
+                "sure this is registered in the hardware_interface::RobotHW class. "
+                "(gazebo_ros_control's DefaultRobotHWSim registers the effort, position and "
+                "velocity joint interfaces only)")
+            return LoadControllerResponse(False)
         if controller_class is None:
             self.context.bus.warn(f"controller_manager: cannot load '{name}': type "
                                   f"'{params['type']}' is not emulated; known types: "
