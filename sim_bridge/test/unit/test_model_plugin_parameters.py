@@ -124,6 +124,7 @@ def test_the_f3d_header_is_its_frame_name_through_tf_resolve(world, bus, frame, 
     """frameName (world, :89-99) through tf::resolve with the tf_prefix (:112-115)."""
     xml = post(plugins()).replace("<topicName>arm_force</topicName>",
                                   f"<topicName>arm_force</topicName>{frame}")
+    bus.params["/tf_prefix"] = prefix
     world.spawn_urdf("post", xml, namespace="/", tf_prefix=prefix)
     run(world, 0.002)
     assert bus.last("/arm_force").header.frame_id == header
@@ -140,6 +141,24 @@ def test_the_f3d_publishes_every_step_while_someone_listens(world, bus):
     assert stamps_ms(bus, "/arm_force") == [6, 7, 8]
 
 
+@pytest.mark.parametrize("params, header", [
+    ({"/tf_prefix": "top"}, "world"), ({"/tf_prefix": "top", "/r1/tf_prefix": "own"},
+                                       "own/world"), ({"/r1/tf_prefix": 3}, "world")])
+def test_the_f3d_and_ft_sensor_read_tf_prefix_in_their_own_namespace_only(world, bus, params,
+                                                                           header):
+    """Both plugins read ``tf_prefix`` with getParam on a node handle in their robotNamespace
+    (gazebo_ros_f3d.cpp:110-115, gazebo_ros_ft_sensor.cpp:121-126), not by tf's
+    searchParam (ros/geometry noetic-devel fe344b6 tf/include/tf/transform_listener.h:55-63)
+    that gives the model its tf_prefix: a prefix set only above the robot's namespace is not
+    theirs (before: the model's, top/world and top/arm), and a value that is not a string
+    is not read."""
+    bus.params.update(params)
+    world.spawn_urdf("post", post(plugins()), namespace="/r1", tf_prefix="top")
+    run(world, 0.002)
+    assert bus.last("/r1/arm_force").header.frame_id == header
+    assert bus.last("/r1/shoulder_wrench").header.frame_id == header.replace("world", "arm")
+
+
 # --- libgazebo_ros_ft_sensor.so --------------------------------------------------------------
 def test_the_ft_sensor_rate_counts_from_0_and_its_frame_is_the_child_link(world, bus):
     """updateRate: nothing until 1/rate s after the last message, the last starting at 0
@@ -148,6 +167,7 @@ def test_the_ft_sensor_rate_counts_from_0_and_its_frame_is_the_child_link(world,
     xml = post(plugins()).replace("<topicName>shoulder_wrench</topicName>",
                                   "<topicName>shoulder_wrench</topicName>"
                                   "<updateRate>50</updateRate>")
+    bus.params["/tf_prefix"] = "p"
     world.spawn_urdf("post", xml, namespace="/", tf_prefix="p")
     run(world, 0.07)
     assert stamps_ms(bus, "/shoulder_wrench") == [20, 40, 60]

@@ -277,15 +277,25 @@ class Plugin:
     def topic(self, name: str) -> str:
         return resolve_topic(self.namespace, name)
 
-    def frame(self, name: str) -> str:
-        """A frame name with the model's tf_prefix, as tf::resolve makes it (ros/geometry
-        noetic-devel fe344b6, tf/src/tf.cpp:159-185): a name that starts with
-        '/' is absolute, its slash dropped and no prefix added (``/world`` stays
-        ``world``); any other gets the prefix."""
+    def frame(self, name: str, prefix: Optional[str] = None) -> str:
+        """A frame name with the model's tf_prefix (or ``prefix`` when given), as
+        tf::resolve makes it (ros/geometry noetic-devel fe344b6, tf/src/tf.cpp:159-185): a
+        name that starts with '/' is absolute, its slash dropped and no prefix added
+        (``/world`` stays ``world``); any other gets the prefix."""
         if name.startswith("/"):
             return name.lstrip("/")
-        prefix = self.context.tf_prefix.strip("/")
+        prefix = (self.context.tf_prefix if prefix is None else prefix).strip("/")
         return f"{prefix}/{name}" if prefix else name
+
+    def own_tf_prefix(self) -> str:
+        """The ``tf_prefix`` parameter in the plugin's own namespace and nowhere above it:
+        what a plugin gets that reads it with ``getParam`` on a node handle in its
+        robotNamespace (f3d and ft_sensor, gazebo_ros_pkgs noetic-devel f9e1a46,
+        gazebo_plugins/src/gazebo_ros_f3d.cpp:112-115, gazebo_ros_ft_sensor.cpp:123-126),
+        unlike tf::getPrefixParam's search, which the model's ``tf_prefix`` follows. A
+        value that is not a string is not read, as getParam into a std::string fails."""
+        value = self.context.bus.get_param(self.topic("tf_prefix"), "")
+        return value if isinstance(value, str) else ""
 
     # --- the step ---------------------------------------------------------------------
     def before_step(self, now_ns: int) -> None:

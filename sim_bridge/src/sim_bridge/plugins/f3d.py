@@ -3,7 +3,8 @@ geometry_msgs/WrenchStamped ("force feedback ground truth").
 
 Parameters as gazebo_plugins (noetic): ``bodyName`` (required; a link of the model as Gazebo
 builds it, so not one that a fixed joint lumps into its parent), ``topicName`` (required),
-``frameName`` (world; only the header's frame_id, the tf_prefix applied: the plugin reports
+``frameName`` (world; only the header's frame_id, with the ``tf_prefix`` parameter of the
+plugin's own namespace, not searched further up, applied: the plugin reports
 in world axes whatever it says), ``robotNamespace``.
 
 What Gazebo's plugin reads is the link's force and torque accumulators at the start of each
@@ -37,7 +38,8 @@ class F3D(Plugin):
         topic = self.param("topicName")
         if not topic:
             raise PluginError(f"plugin '{spec.name}' ({spec.filename}) needs <topicName>")
-        self.frame_id = self.frame(self.param("frameName", "world"))
+        # the tf_prefix of the plugin's own namespace, not searched upwards (:112-115)
+        self.frame_id = self.frame(self.param("frameName", "world"), self.own_tf_prefix())
         self.output = context.bus.publisher(self.topic(topic), WrenchStamped, queue_size=1)
 
     def after_step(self, now_ns: int) -> None:

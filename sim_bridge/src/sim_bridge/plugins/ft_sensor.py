@@ -7,7 +7,8 @@ Gazebo builds it, so not a fixed joint it lumps), ``topicName`` (required),
 ``updateRate`` (0: every step; else a message once at least 1/updateRate s have passed
 since the last one, counted from 0, and only while someone subscribes:
 gazebo_plugins/src/gazebo_ros_ft_sensor.cpp:173-179, :228), ``robotNamespace``. The
-header's frame is the joint's child link (tf_prefix applied).
+header's frame is the joint's child link, with the ``tf_prefix`` parameter of the plugin's
+own namespace (not searched further up) applied.
 
 What the plugin publishes is Gazebo's ``Joint::GetForceTorque(0)`` ``body2Force`` and
 ``body2Torque``: the load the child's side puts on the joint, i.e. minus the wrench the
@@ -50,7 +51,9 @@ class FTSensor(Plugin):
                                                physicsClientId=context.client)[13], dtype=float)
         pb.enableJointForceTorqueSensor(robot.id, self.index, True,
                                         physicsClientId=context.client)
-        self.frame_id = self.frame(robot.model.joints[joint].child)
+        # the tf_prefix of the plugin's own namespace, not searched upwards
+        # (gazebo_plugins/src/gazebo_ros_ft_sensor.cpp:123-126)
+        self.frame_id = self.frame(robot.model.joints[joint].child, self.own_tf_prefix())
         self.noise = self.number("gaussianNoise", 0.0)
         # last_time_ is never set at load: common::Time(), 0
         self.throttle = Throttle(self.number("updateRate", 0.0))
