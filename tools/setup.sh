@@ -28,7 +28,9 @@ check_platform
 # the message headers; Python nodes: tf.transformations); what robot packages' launch files
 # start and their CMakeLists find (tf's and tf2_ros's static_transform_publisher, nodelet,
 # topic_tools' relay and throttle, rviz and robot_state_publisher as C++ libraries,
-# tf_conversions for students' movers).
+# tf_conversions for students' movers); what Gazebo's C++ plugin API is built on
+# (compat/gazebo_dev: the real sdformat 12 and ignition-math6) and sim_bridge's plugin host
+# (a pybind11 module).
 apt_packages=(
   catkin catkin-lint python3-catkin-pkg ros-message-generation ros-message-runtime
   python3-genpy python3-genmsg cmake make g++
@@ -52,6 +54,7 @@ apt_packages=(
   python3-tf-conversions libros-rosgraph-msgs-dev libactionlib-dev python3-pykdl
   xvfb xauth x11-utils xdotool imagemagick
   python3-venv python3-pip
+  libsdformat-dev libignition-math-dev pybind11-dev python3-dev
 )
 missing=()
 for pkg in "${apt_packages[@]}"; do

@@ -53,6 +53,7 @@ from gazebo_msgs.msg import (LinkState, LinkStates, ModelState, ModelStates, Per
 from sim_bridge import one_simulator
 from sim_bridge.plugins.base import Bus, PluginError
 from sim_bridge.poses import quaternion_matrix
+from sim_bridge import native_plugins
 from sim_bridge.ros_publishing import ClockPublisher, batch_queued_writes
 from sim_bridge.sdf_world import SdfError, load_world, parse_light, parse_model
 from sim_bridge.stop_signals import StopSignals, shut_rospy_down
@@ -869,6 +870,8 @@ def main(overrides: Optional[Dict[str, Any]] = None) -> None:
         raise SystemExit(ALREADY_RUNNING_STATUS)
     # rospy's signal handling off: see sim_bridge.stop_signals
     rospy.init_node("gazebo", disable_signals=True)
+    # Gazebo C++ plugins get roscpp, under a node name of their own (sim_bridge.native_plugins)
+    native_plugins.use_ros(native_plugins.ROS_NODE_NAME)
     batch_queued_writes()  # see sim_bridge.ros_publishing
     # rospy's writer and reader threads get the interpreter at least this often while the
     # loop steps (Python's default, 5 ms, is 100 ms of simulated time at 20x real time:

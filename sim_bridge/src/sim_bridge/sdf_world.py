@@ -4,8 +4,9 @@ A world is ``<physics>`` (step size), ``<gravity>``, ``<include>`` of ``model://
 (searched in ``GAZEBO_MODEL_PATH``, then in sim_bridge's ``models/``), and ``<model>``
 with ``<static>``, ``<pose>`` and links of box, cylinder, sphere, plane and mesh geometry,
 and the world's lights: its ``<light>`` elements and the lights it includes (``model://sun``),
-with SDF's defaults (:class:`LightSpec`), for gazebo_ros's light services. Scenes, GUI and
-plugins of the world are accepted and ignored.
+with SDF's defaults (:class:`LightSpec`), for gazebo_ros's light services; the ``<plugin>``
+elements of the world and of its models, which :mod:`sim_bridge.world` loads as Gazebo's
+C++ plugins (:mod:`sim_bridge.native_plugins`). Scenes and GUI are accepted and ignored.
 
 Meshes (``model://``, ``file://`` or relative URIs) are read as Gazebo reads them, through
 :mod:`sim_bridge.mesh_files`: OBJ, STL and Collada, the last converted to OBJ for pybullet
@@ -173,6 +174,8 @@ class ModelSpec:
     # its root link's pose in the model's frame ("" and None for a single body)
     urdf: str = ""
     urdf_root_pose: Optional[Pose6] = None
+    # its <plugin> elements, which sim_bridge.world loads as Gazebo's C++ plugins
+    plugins: List[ET.Element] = field(default_factory=list)
     # where the model stood when Gazebo made its <plane> collisions: a plane is fixed at its
     # collision's height then (before a world's <state> moves the model) and never moved
     # again (World._plane_placement); None: the model's pose when its bodies are first made
@@ -207,6 +210,8 @@ class WorldSpec:
     # the world's lights in the file's order (an included one with its <include>'s name
     # and pose, as sdformat's parser.cc gives them: sdf9 66a8c21 src/parser.cc:987-1027)
     lights: List[LightSpec] = field(default_factory=list)
+    # the world's <plugin> elements (Gazebo's world plugins), in the file's order
+    plugins: List[ET.Element] = field(default_factory=list)
 
 
 def model_search_path() -> List[str]:
@@ -495,6 +500,7 @@ def _model(element: ET.Element, source: str, model_dir: str, warnings: _Warnings
         raise SdfError(f"{source}: a <model> has no name")
     static = (element.findtext("static") or "false").strip().lower() in ("1", "true")
     model = ModelSpec(name, static, _pose(element, f"model '{name}'", source), source=source)
+    model.plugins = element.findall("plugin")
     for link in element.findall("link"):
         model.links.append(_link(link, name, source, model_dir, warnings))
     for nested in element.findall("include"):
@@ -681,6 +687,7 @@ def _load_world(path: str, warnings: _Warnings) -> WorldSpec:
     if world is None or world.tag != "world":
         raise SdfError(f"{path}: no <world> in it")
     spec = WorldSpec(world.get("name", "default"), source=path)
+    spec.plugins = world.findall("plugin")
     physics = world.find("physics")
     if physics is not None:
         spec.step_size = _child_number(physics, "max_step_size", DEFAULT_STEP_SIZE,

@@ -32,7 +32,8 @@ from sim_bridge.external_forces import (BodyWrench, ExternalForces, JointEffort,
                                         Window, centre_of_mass)
 from sim_bridge.gazebo_tags import GazeboTags, read_gazebo_tags
 from sim_bridge.model_structure import Structure, sdf_structure, urdf_structure
-from sim_bridge.plugins import create_plugins
+from sim_bridge.native_plugins import NativePlugins
+from sim_bridge.plugins import MODEL_PLUGINS, create_plugins
 from sim_bridge.plugins.base import Bus, Plugin, PluginContext
 from sim_bridge.poses import (compose6, normalized, pose6_matrix, pose6_to_position_quaternion,
                               quaternion_from_rpy, quaternion_matrix)
@@ -329,6 +330,11 @@ class World:
         self.lights: List[LightSpec] = []
         # free SDF bodies without gravity: (pybullet body, mass)
         self._weightless_bodies: List[Tuple[int, float]] = []
+        self.world_name = "default"
+        # Gazebo's C++ plugins (sim_bridge.native_plugins) and the joint efforts they set for
+        # the next step: (body, joint index) → N or N m
+        self.native = NativePlugins(self)
+        self._native_efforts: Dict[Tuple[int, int], float] = {}
         self._configure_physics()
 
     # --- physics settings --------------------------------------------------------------
@@ -416,10 +422,13 @@ class World:
         self.step_size = spec.step_size
         self.gravity = spec.gravity
         self.max_update_rate = factor / self.step_size
+        self.world_name = spec.name
         self._configure_physics()
         for model in spec.models:
             self.add_sdf_model(model)
         self.lights.extend(spec.lights)
+        for element in spec.plugins:  # after the models, as Gazebo loads them
+            self.native.load_world_plugin(spec.name, element)
 
     # --- models from SDF ------------------------------------------------------------------
     def add_sdf_model(self, spec: ModelSpec, position: Optional[Sequence[float]] = None,
@@ -437,6 +446,7 @@ class World:
             spec.pose = compose6((*position, *roll_pitch_yaw), spec.pose)
         if spec.urdf:  # articulated: built as the URDF robot it converts to, as Gazebo would
             root = compose6(spec.pose, spec.urdf_root_pose)
+            # its <plugin>s travel in the URDF's <gazebo> blocks (sim_bridge.sdf_articulated)
             return self.spawn_urdf(spec.name, spec.urdf, *pose6_to_position_quaternion(root),
                                    namespace=namespace, source=spec.source)
         pos, orn = pose6_to_position_quaternion(spec.pose)
@@ -459,7 +469,16 @@ class World:
                 for link in spec.links for shape in link.collisions if shape.kind != "mesh"]
         self.models[spec.name] = model
         self._scene_changed()
+        self._load_native_plugins(spec.name, spec.plugins, namespace)
         return model
+
+    def _load_native_plugins(self, name: str, elements: Sequence[Any], namespace: str) -> None:
+        """The model's plugins that sim_bridge does not emulate, loaded as Gazebo's C++
+        plugins once the model is in the world (sim_bridge.native_plugins); one that cannot
+        be is a warning, and the model stays."""
+        for element in elements:
+            if element.get("filename", "") not in MODEL_PLUGINS:
+                self.native.load_model_plugin(name, element, namespace)
 
     def _scene_changed(self) -> None:
         """Models came, went or moved: what is derived from them is rebuilt when next used."""
@@ -603,8 +622,11 @@ class World:
                                   baseInertialFramePosition=list(inertial_position),
                                   baseInertialFrameOrientation=list(inertial_orientation),
                                   physicsClientId=self.client)
+        # the collision's <mu> where it gives one (the first that does), as Gazebo reads it
+        friction = next((shape.friction for shape in link.collisions
+                         if shape.friction is not None), WORLD_FRICTION)
         pb.changeDynamics(body, -1, localInertiaDiagonal=list(link.inertia),
-                          lateralFriction=WORLD_FRICTION, linearDamping=0.0, angularDamping=0.0,
+                          lateralFriction=friction, linearDamping=0.0, angularDamping=0.0,
                           physicsClientId=self.client)
         return body
 
@@ -700,6 +722,7 @@ class World:
             if shape.geometry.kind != "mesh"]
         self.models[name] = model
         self._scene_changed()
+        self._load_native_plugins(name, [spec.element for spec in tags.plugins], namespace)
         return model
 
     def _lifted_out_of_scenery(self, robot: RobotBody, position: Sequence[float],
@@ -746,6 +769,7 @@ class World:
 
     def delete(self, name: str) -> None:
         model = self.model(name)
+        self.native.remove_model(name)
         for plugin in model.plugins:
             plugin.close()
         del self.models[name]
@@ -1348,6 +1372,7 @@ class World:
                                           for j in model.robot.movable_joints()})
             for plugin in model.plugins:
                 plugin.reset(self.now_ns)
+        self.native.reset()
 
     # --- stepping -------------------------------------------------------------------------
     def step(self) -> bool:
@@ -1356,12 +1381,80 @@ class World:
         if self.paused:
             return False
         self._refresh_step_lists()
+        # Gazebo's order: WorldUpdateBegin with the time of the step to come, the physics,
+        # WorldUpdateEnd (sim_bridge.native_plugins)
+        self.native.begin(self.now_ns + self._step_ns)
         for plugin in self._plugins:
             plugin.before_step(self.now_ns)
+        self._apply_native_efforts()
         self.step_physics()
         for plugin in self._plugins:
             plugin.after_step(self.now_ns)
+        self.native.end()
         return True
+
+    # --- what Gazebo's C++ plugins set (sim_bridge.native_plugins) --------------------------
+    def set_twist(self, name: str, linear: Sequence[float], angular: Sequence[float]) -> None:
+        """A free model's velocity (of its frame's origin, world axes), its pose kept."""
+        model = self.model(name)
+        body = model.robot.id if model.robot is not None else model.body
+        if body is None:
+            return
+        com = np.asarray(pb.getBasePositionAndOrientation(body, physicsClientId=self.client)[0])
+        origin = np.asarray(self.pose(name)[0])
+        com_linear = np.asarray(linear, float) + np.cross(angular, com - origin)
+        pb.resetBaseVelocity(body, com_linear.tolist(), list(angular),
+                             physicsClientId=self.client)
+
+    def add_link_wrench(self, model_name: str, link: str, force: Sequence[float],
+                        torque: Sequence[float], in_link_frame: bool) -> None:
+        """A force at a link's centre of mass and a torque, for the next step only (pybullet
+        clears them after each, as ODE does); in the link's axes when ``in_link_frame``."""
+        model = self.model(model_name)
+        if model.robot is not None:
+            body, index = model.robot.id, model.robot.link_index[link]
+        elif model.body is not None:
+            body, index = model.body, -1
+        else:
+            return
+        if index == -1:
+            com, rotation = pb.getBasePositionAndOrientation(body, physicsClientId=self.client)
+        else:
+            state = pb.getLinkState(body, index, computeForwardKinematics=1,
+                                    physicsClientId=self.client)
+            com, rotation = state[0], state[1]
+        force, torque = np.asarray(force, float), np.asarray(torque, float)
+        if in_link_frame:
+            turn = np.asarray(pb.getMatrixFromQuaternion(rotation)).reshape(3, 3)
+            force, torque = turn @ force, turn @ torque
+        if force.any():
+            pb.applyExternalForce(body, index, force.tolist(), list(com), pb.WORLD_FRAME,
+                                  physicsClientId=self.client)
+        if torque.any():
+            pb.applyExternalTorque(body, index, torque.tolist(), pb.WORLD_FRAME,
+                                   physicsClientId=self.client)
+
+    def set_model_gravity(self, name: str, on: bool) -> None:
+        """Gravity on or off for all of a model's links."""
+        model = self.model(name)
+        if model.robot is not None:
+            model.robot.set_gravity(list(model.robot.link_index.values()), on)
+        elif model.kind == "body":
+            model.weightless = not on
+        self._refresh_weightless()
+
+    def set_step_joint_force(self, model_name: str, joint: str, force: float) -> None:
+        """A joint's effort for the next step (N or N m)."""
+        robot = self.model(model_name).robot
+        self._native_efforts[(robot.id, robot.joint_index[joint])] = float(force)
+
+    def _apply_native_efforts(self) -> None:
+        if not self._native_efforts:
+            return
+        for (body, index), force in self._native_efforts.items():
+            pb.setJointMotorControl2(body, index, pb.TORQUE_CONTROL, force=force,
+                                     physicsClientId=self.client)
+        self._native_efforts = {}
 
     def step_physics(self) -> None:
         """The physics of one step alone (forces, tyres, pybullet's step), no plugins: what
@@ -1460,6 +1553,7 @@ class World:
         return primitives
 
     def close(self) -> None:
+        self.native.close()  # C++ plugins first: they may still read the world
         for name in list(self.models):
             for plugin in self.models[name].plugins:
                 plugin.close()

@@ -1,9 +1,11 @@
 """Gazebo plugins emulated by sim_bridge, found by the ``filename`` a URDF gives.
 
 ``MODEL_PLUGINS`` maps a model plugin's filename to its class; ``SENSOR_PLUGINS`` maps a
-sensor plugin's filename to its class and the sensor types it serves. Anything else gets
-one warning that names it, and the robot runs without it; so does a plugin that cannot run
-as written (see ``_build``).
+sensor plugin's filename to its class and the sensor types it serves. Another model plugin
+is loaded as Gazebo's C++ plugin from the plugin path (:mod:`sim_bridge.native_plugins`,
+which warns, naming it, when it cannot be, and the robot runs without it); another sensor
+plugin gets one warning that names it, and the robot runs without it; so does a plugin that
+cannot run as written (see ``_build``).
 
 A ``<sensor>`` without a plugin publishes nothing to ROS, in Gazebo as here. It warns,
 unless a model plugin reads its link (``<bodyName>``): TurtleBot3 marks its ``imu_link``
@@ -137,10 +139,8 @@ def _create_plugins(context: PluginContext, tags: GazeboTags, plugins: List[Plug
     read_links = links_read_by_model_plugins(tags, context.robot.model.root())
     for spec in tags.plugins:
         plugin_class = MODEL_PLUGINS.get(spec.filename)
-        if plugin_class is None:
-            context.bus.warn(f"model '{context.model_name}': plugin '{spec.name}' "
-                             f"({spec.filename}) is not emulated by sim_bridge; ignored")
-            continue
+        if plugin_class is None:  # a Gazebo C++ plugin: the world loads it once the model
+            continue              # is in it (sim_bridge.native_plugins)
         _build(context, spec, f"plugin '{spec.name}' ({spec.filename})",
                lambda tracked, cls=plugin_class, spec=spec: cls(tracked, spec), plugins)
     for sensor in tags.sensors:

@@ -1,0 +1,29 @@
+// gazebo::sensors' names and pointer types (std::shared_ptr, as Gazebo 11's). The sensor
+// classes are declared, not provided yet: sim_bridge emulates sensors in Python, and no
+// C++ view onto them exists (a later landing adds ContactSensor, RaySensor and ImuSensor).
+#ifndef GAZEBO_COMPAT_SENSORS_SENSORTYPES_HH
+#define GAZEBO_COMPAT_SENSORS_SENSORTYPES_HH
+#include <memory>
+#include <vector>
+
+namespace gazebo
+{
+  namespace sensors
+  {
+    class Sensor;
+    class RaySensor;
+    class ContactSensor;
+    class ImuSensor;
+    class CameraSensor;
+    class GpsSensor;
+    class SensorManager;
+    typedef std::shared_ptr<Sensor> SensorPtr;
+    typedef std::shared_ptr<RaySensor> RaySensorPtr;
+    typedef std::shared_ptr<ContactSensor> ContactSensorPtr;
+    typedef std::shared_ptr<ImuSensor> ImuSensorPtr;
+    typedef std::shared_ptr<CameraSensor> CameraSensorPtr;
+    typedef std::shared_ptr<GpsSensor> GpsSensorPtr;
+    typedef std::vector<SensorPtr> Sensor_V;
+  }
+}
+#endif

@@ -1,0 +1,365 @@
+// gazebo_compat::Host: the world, its models, the plugin loader, the step's events.
+#include <dlfcn.h>
+#include <sys/stat.h>
+
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+
+#include "gazebo/common/Events.hh"
+#include "gazebo/physics/physics.hh"
+#include "gazebo_compat/Host.hh"
+
+namespace gazebo_compat
+{
+namespace
+{
+std::vector<std::string> Split(const char *_text)
+{
+  std::vector<std::string> parts;
+  if (!_text)
+    return parts;
+  std::stringstream stream(_text);
+  std::string part;
+  while (std::getline(stream, part, ':'))
+    if (!part.empty())
+      parts.push_back(part);
+  return parts;
+}
+
+bool IsFile(const std::string &_path)
+{
+  struct stat info;
+  return stat(_path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
+}
+
+// "the exception's text" for whatever a plugin threw
+std::string Describe(std::exception_ptr _error)
+{
+  try
+  {
+    std::rethrow_exception(_error);
+  }
+  catch (const gazebo::common::Exception &_e)
+  {
+    std::string text = _e.GetErrorStr();
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+      text.pop_back();
+    return text;
+  }
+  catch (const std::exception &_e)
+  {
+    return _e.what();
+  }
+  catch (...)
+  {
+    return "an exception that is not a std::exception";
+  }
+}
+}  // namespace
+
+void *OpenPluginLibrary(const std::string &_filename, std::string &_fullname,
+                        std::string &_error)
+{
+  _fullname = _filename;
+  if (_filename.find('/') == std::string::npos)
+  {
+    for (const auto &folder : Host::PluginPath())
+    {
+      if (IsFile(folder + "/" + _filename))
+      {
+        _fullname = folder + "/" + _filename;
+        break;
+      }
+    }
+  }
+  void *handle = dlopen(_fullname.c_str(), RTLD_LAZY | RTLD_GLOBAL);
+  if (!handle)
+  {
+    const char *error = dlerror();
+    _error = error ? error : "dlopen failed";
+    return nullptr;
+  }
+  void *symbol = dlsym(handle, "RegisterPlugin");
+  if (!symbol)
+  {
+    const char *error = dlerror();
+    _error = std::string("no RegisterPlugin in it (not a Gazebo plugin: GZ_REGISTER_*_PLUGIN "
+                         "missing?): ") + (error ? error : "");
+    return nullptr;
+  }
+  return symbol;
+}
+
+std::vector<std::string> Host::PluginPath()
+{
+  std::vector<std::string> folders = Split(std::getenv("GAZEBO_PLUGIN_PATH"));
+  for (const auto &prefix : Split(std::getenv("CMAKE_PREFIX_PATH")))
+    folders.push_back(prefix + "/lib");
+  return folders;
+}
+
+Host &Host::Instance()
+{
+  static Host host;
+  return host;
+}
+
+void Host::SetBackend(std::shared_ptr<Backend> _backend)
+{
+  std::lock_guard<std::recursive_mutex> lock(this->mutex);
+  this->backend = _backend;
+}
+
+std::shared_ptr<Backend> Host::GetBackend() const
+{
+  std::lock_guard<std::recursive_mutex> lock(this->mutex);
+  if (!this->backend)
+    throw std::runtime_error("sim_bridge's Gazebo plugin host has no world (closed)");
+  return this->backend;
+}
+
+gazebo::physics::WorldPtr Host::World()
+{
+  std::lock_guard<std::recursive_mutex> lock(this->mutex);
+  if (!this->world)
+    this->world.reset(new gazebo::physics::World());
+  return this->world;
+}
+
+gazebo::physics::ModelPtr Host::Model(const std::string &_name)
+{
+  using namespace gazebo::physics;
+  std::lock_guard<std::recursive_mutex> lock(this->mutex);
+  auto found = this->models.find(_name);
+  if (found != this->models.end())
+    return found->second;
+  const ModelInfo info = this->GetBackend()->Describe(_name);
+  ModelPtr model(new gazebo::physics::Model(BasePtr()));
+  model->SetWorld(this->World());
+  model->SetName(_name);
+  Link_V links;
+  for (const auto &name : info.links)
+  {
+    LinkPtr link(new Link(model));
+    link->SetName(name);
+    links.push_back(link);
+  }
+  auto linkNamed = [&links](const std::string &_link) {
+    for (const auto &link : links)
+      if (link->GetName() == _link)
+        return link;
+    return LinkPtr();
+  };
+  Joint_V joints;
+  for (const auto &joint : info.joints)
+  {
+    JointPtr made(new Joint(model, joint.type));
+    made->SetName(joint.name);
+    made->Attach(linkNamed(joint.parent), linkNamed(joint.child), joint.lower, joint.upper,
+                 joint.effort, joint.velocity);
+    joints.push_back(made);
+  }
+  model->Build(links, joints);
+  this->models[_name] = model;
+  return model;
+}
+
+std::vector<gazebo::physics::ModelPtr> Host::KnownModels() const
+{
+  std::lock_guard<std::recursive_mutex> lock(this->mutex);
+  std::vector<gazebo::physics::ModelPtr> known;
+  for (const auto &entry : this->models)
+    known.push_back(entry.second);
+  return known;
+}
+
+std::string Host::LoadModelPlugin(const std::string &_model, const std::string &_filename,
+                                  const std::string &_name, sdf::ElementPtr _sdf)
+{
+  gazebo::physics::ModelPtr model;
+  gazebo::ModelPlugin::TPtr plugin;
+  std::string fullname, error;
+  void *symbol = OpenPluginLibrary(_filename, fullname, error);
+  if (!symbol)
+    return "failed to load plugin " + _filename + ": " + error;
+  try
+  {
+    model = this->Model(_model);
+    typedef gazebo::ModelPlugin *(*Register)();
+    plugin.reset(reinterpret_cast<Register>(symbol)());
+  }
+  catch (...)
+  {
+    return "its constructor threw: " + Describe(std::current_exception());
+  }
+  if (!plugin)
+    return "RegisterPlugin returned no plugin";
+  if (plugin->GetType() != gazebo::MODEL_PLUGIN)
+    return "it is not a model plugin (GZ_REGISTER_MODEL_PLUGIN); a world plugin belongs in "
+           "the world file, others are not loaded by sim_bridge";
+  try
+  {
+    plugin->Load(model, _sdf);
+    plugin->Init();
+  }
+  catch (...)
+  {
+    return "exception in the Load function of plugin with name[" + _name + "] and filename[" +
+           _filename + "]: " + Describe(std::current_exception()) + "; this plugin will not run";
+  }
+  std::lock_guard<std::recursive_mutex> lock(this->mutex);
+  this->modelPlugins.emplace_back(_model, plugin);
+  return "";
+}
+
+std::string Host::LoadWorldPlugin(const std::string &_filename, const std::string &_name,
+                                  sdf::ElementPtr _sdf)
+{
+  gazebo::WorldPlugin::TPtr plugin;
+  std::string fullname, error;
+  void *symbol = OpenPluginLibrary(_filename, fullname, error);
+  if (!symbol)
+    return "failed to load plugin " + _filename + ": " + error;
+  try
+  {
+    typedef gazebo::WorldPlugin *(*Register)();
+    plugin.reset(reinterpret_cast<Register>(symbol)());
+  }
+  catch (...)
+  {
+    return "its constructor threw: " + Describe(std::current_exception());
+  }
+  if (!plugin)
+    return "RegisterPlugin returned no plugin";
+  if (plugin->GetType() != gazebo::WORLD_PLUGIN)
+    return "it is not a world plugin (GZ_REGISTER_WORLD_PLUGIN)";
+  try
+  {
+    plugin->Load(this->World(), _sdf);
+    plugin->Init();
+  }
+  catch (...)
+  {
+    return "exception in the Load function of plugin with name[" + _name + "] and filename[" +
+           _filename + "]: " + Describe(std::current_exception()) + "; this plugin will not run";
+  }
+  std::lock_guard<std::recursive_mutex> lock(this->mutex);
+  this->worldPlugins.push_back(plugin);
+  return "";
+}
+
+void Host::RemoveModel(const std::string &_name)
+{
+  std::vector<gazebo::ModelPlugin::TPtr> dropped;
+  {
+    std::lock_guard<std::recursive_mutex> lock(this->mutex);
+    for (auto it = this->modelPlugins.begin(); it != this->modelPlugins.end();)
+    {
+      if (it->first == _name)
+      {
+        dropped.push_back(it->second);
+        it = this->modelPlugins.erase(it);
+      }
+      else
+        ++it;
+    }
+    this->models.erase(_name);
+  }
+  // destroyed outside the lock: a plugin's destructor may join its own threads
+  dropped.clear();
+}
+
+std::vector<std::string> Host::PluginNames(const std::string &_model) const
+{
+  std::lock_guard<std::recursive_mutex> lock(this->mutex);
+  std::vector<std::string> names;
+  for (const auto &entry : this->modelPlugins)
+    if (entry.first == _model)
+      names.push_back(entry.second->GetHandle());
+  return names;
+}
+
+void Host::SetSimTime(int64_t _simTimeNs)
+{
+  std::lock_guard<std::recursive_mutex> lock(this->mutex);
+  this->simTimeNs = _simTimeNs;
+}
+
+int64_t Host::SimTimeNs() const
+{
+  std::lock_guard<std::recursive_mutex> lock(this->mutex);
+  return this->simTimeNs;
+}
+
+uint32_t Host::Iterations() const
+{
+  std::lock_guard<std::recursive_mutex> lock(this->mutex);
+  return this->iterations;
+}
+
+void Host::WorldUpdateBegin(int64_t _simTimeNs)
+{
+  {
+    std::lock_guard<std::recursive_mutex> lock(this->mutex);
+    this->simTimeNs = _simTimeNs;
+    ++this->iterations;
+  }
+  gazebo::common::UpdateInfo info;
+  info.worldName = this->GetBackend()->WorldName();
+  info.simTime = this->World()->SimTime();
+  info.realTime = gazebo::common::Time::GetWallTime();
+  gazebo::event::Events::worldUpdateBegin(info);
+  // then the models' joint controllers, as Gazebo's World::Update runs Model::Update
+  for (const auto &model : this->KnownModels())
+    model->UpdateControllers();
+  gazebo::event::Events::beforePhysicsUpdate(info);
+}
+
+void Host::WorldUpdateEnd()
+{
+  // a joint's effort lasts one step (Gazebo clears its forces after each)
+  for (const auto &model : this->KnownModels())
+    model->ClearForces();
+  gazebo::event::Events::worldUpdateEnd();
+}
+
+void Host::Reset()
+{
+  for (const auto &model : this->KnownModels())
+    model->Reset();
+  std::vector<gazebo::WorldPlugin::TPtr> worldPlugins;
+  std::vector<gazebo::ModelPlugin::TPtr> modelPlugins;
+  {
+    std::lock_guard<std::recursive_mutex> lock(this->mutex);
+    worldPlugins = this->worldPlugins;
+    for (const auto &entry : this->modelPlugins)
+      modelPlugins.push_back(entry.second);
+  }
+  for (const auto &plugin : worldPlugins)
+    plugin->Reset();
+  for (const auto &plugin : modelPlugins)
+    plugin->Reset();
+  gazebo::event::Events::worldReset();
+  gazebo::event::Events::timeReset();
+}
+
+void Host::Close()
+{
+  gazebo::event::Events::stop();
+  std::vector<gazebo::WorldPlugin::TPtr> worldPlugins;
+  std::vector<std::pair<std::string, gazebo::ModelPlugin::TPtr>> modelPlugins;
+  {
+    std::lock_guard<std::recursive_mutex> lock(this->mutex);
+    worldPlugins.swap(this->worldPlugins);
+    modelPlugins.swap(this->modelPlugins);
+    this->models.clear();
+    this->world.reset();
+    this->iterations = 0;
+  }
+  modelPlugins.clear();
+  worldPlugins.clear();
+  std::lock_guard<std::recursive_mutex> lock(this->mutex);
+  this->backend.reset();
+}
+}  // namespace gazebo_compat
