@@ -147,6 +147,39 @@ def test_a_joint_value_that_is_not_a_number_is_named(services):
         spawn_model.spawn(args)
 
 
+class LatchedTopic:
+    """Stands in for rospy.Subscriber on a latched topic: hands the subscriber, as it is
+    made, the messages already published there (their data)."""
+
+    def __init__(self, published):
+        self.published, self.topics = published, []
+
+    def __call__(self, topic, kind, callback):
+        self.topics.append((topic, kind))
+        for data in self.published:
+            callback(kind(data))
+
+
+@pytest.mark.parametrize("published", [["<robot name='old'/>", "<robot name='r'/>"], []])
+def test_topic_takes_the_latest_string_or_names_the_topic_after_timeout(monkeypatch,
+                                                                         published):
+    """-topic is not Noetic's (its script has no such argument, :52-83): the latest
+    std_msgs/String on the topic is the description, waited for up to -timeout; none, the
+    topic is named."""
+    from std_msgs.msg import String
+    subscriber = LatchedTopic(published)
+    monkeypatch.setattr(spawn_model.rospy, "Subscriber", subscriber)
+    args = parse_arguments(["-urdf", "-topic", "robot_description_topic", "-model", "r",
+                            "-timeout", "0.05"])
+    if published:
+        assert read_description(args) == published[-1]
+    else:
+        with pytest.raises(SpawnError, match="nothing was published on "
+                                             "robot_description_topic"):
+            read_description(args)
+    assert subscriber.topics == [("robot_description_topic", String)]
+
+
 def test_a_parameter_not_set_is_waited_for_then_named(monkeypatch):
     """Noetic's rospy.get_param raises KeyError at once (:132); here -param waits up to
     -timeout for the parameter (a launch file may set it after starting spawn_model), then
