@@ -116,3 +116,45 @@ def test_a_plugin_that_throws_or_is_missing_is_named_and_the_model_spawns(plugin
     for _ in range(500):
         world.step()
     assert world.pose("crate")[0][0] > 0.1
+
+
+# wheel_drive's command: 0.5 m straight, or 90 degrees on the spot, in 2 s
+DRIVE_SECONDS = 2.0
+DRIVE_TOLERANCE = 0.05  # the wheels' slip
+SPIN_UP_SECONDS = 0.5  # spawned 0.1 m up: the fall and the wheels' start, not measured
+
+
+def _driven_bot(diff_bot_xml, linear, angular):
+    xml = diff_bot_xml(drive="none")
+    plugin = (f"<gazebo><plugin name='wheels' filename='libwheel_drive.so'>"
+              f"<leftJoint>left_wheel_joint</leftJoint><rightJoint>right_wheel_joint</rightJoint>"
+              f"<wheelSeparation>0.34</wheelSeparation><wheelDiameter>0.1</wheelDiameter>"
+              f"<torque>10</torque><linear>{linear}</linear><angular>{angular}</angular>"
+              f"</plugin></gazebo></robot>")
+    return xml.replace("</robot>", plugin)
+
+
+@pytest.mark.parametrize("linear, angular", [(0.25, 0.0), (0.0, 0.7853981633974483)])
+def test_wheel_motors_by_set_param_drive_the_robot(plugin_world, diff_bot_xml, linear,
+                                                   angular):
+    """SetParam("fmax") in Load and SetParam("vel") each step drive a URDF robot's wheels:
+    0.5 m ahead, or a quarter turn, in ground truth."""
+    import math
+    import pybullet as pb
+    from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec
+    world, bus = plugin_world
+    world.add_sdf_model(ModelSpec("ground", True, links=[
+        LinkSpec("link", collisions=[ShapeSpec("plane")])]))
+    world.spawn_urdf("bot", _driven_bot(diff_bot_xml, linear, angular), (0, 0, 0.1))
+    assert not [w for w in bus.warnings if "wheel" in w]
+    for _ in range(round(SPIN_UP_SECONDS / world.step_size)):  # landed, wheels up to speed
+        world.step()
+    start, start_orientation = world.pose("bot")
+    for _ in range(round(DRIVE_SECONDS / world.step_size)):
+        world.step()
+    end, orientation = world.pose("bot")
+    yaw = pb.getEulerFromQuaternion(orientation)[2] - pb.getEulerFromQuaternion(
+        start_orientation)[2]
+    travelled = math.hypot(end[0] - start[0], end[1] - start[1])
+    assert travelled == pytest.approx(linear * DRIVE_SECONDS, abs=DRIVE_TOLERANCE * 0.5)
+    assert yaw == pytest.approx(angular * DRIVE_SECONDS, abs=DRIVE_TOLERANCE * math.pi / 2)
