@@ -256,3 +256,22 @@ def test_each_mesh_is_closed_and_faces_outward(model):
     solid = trimesh.Trimesh(corners, np.arange(len(corners)).reshape(-1, 3), process=True)
     assert solid.is_watertight and solid.is_winding_consistent
     assert solid.volume > 0
+
+
+def test_lasers_cast_the_meshes_through_pybullet_and_the_rest_through_the_kernel(world):
+    # with a mesh in the scene only the rays through a mesh's bounding box go to pybullet
+    # (World.cast_rays); every ray must read what pybullet alone reads (reference=True)
+    spec, _ = loaded()
+    world.load_world(spec)
+    world.add_sdf_model(dropped_box("crate", "-3.6 0.6 0.05"))
+    run(world, 0.5)
+    angles = np.linspace(-np.pi, np.pi, 720, endpoint=False)
+    directions = np.stack([np.cos(angles), np.sin(angles), np.zeros_like(angles)], axis=1)
+    origin = (-3.0, -1.0, 0.2)  # not level with the box's top (0.3 m), which grazes
+    through = world._rays_through_mesh_bounds(np.array(origin), directions, 0.1, 30.0)
+    assert 0 < through.sum() < 100  # the cone's few rays, not the whole scan
+    fast = world.cast_rays(origin, directions, 0.1, 30.0)
+    alone = world.cast_rays(origin, directions, 0.1, 30.0, reference=True)
+    assert np.isinf(fast).sum() == np.isinf(alone).sum()
+    hits = np.isfinite(alone)
+    assert np.abs(fast[hits] - alone[hits]).max() < 0.002
