@@ -1,6 +1,7 @@
-// gazebo::sensors' names and pointer types (std::shared_ptr, as Gazebo 11's). The sensor
-// classes are declared, not provided yet: sim_bridge emulates sensors in Python, and no
-// C++ view onto them exists (a later landing adds ContactSensor, RaySensor and ImuSensor).
+// gazebo::sensors' names and pointer types (std::shared_ptr, as Gazebo 11's). Of the sensor
+// classes only the base, Sensor, is provided (Sensor.hh): sim_bridge emulates sensors in
+// Python, and no C++ view onto them exists yet (ContactSensor, RaySensor and ImuSensor are a
+// later landing's).
 #ifndef GAZEBO_COMPAT_SENSORS_SENSORTYPES_HH
 #define GAZEBO_COMPAT_SENSORS_SENSORTYPES_HH
 #include <memory>

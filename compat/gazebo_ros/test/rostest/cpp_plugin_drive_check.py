@@ -1,0 +1,151 @@
+#!/usr/bin/env python3
+"""rostest node: a robot's own Gazebo C++ plugin (kobuki_style_gazebo_plugins) runs in
+sim_bridge with roscpp, as under Gazebo: its topics in the robot's namespace, published by
+the simulator's roscpp node beside the rospy node /gazebo, stamped in simulated time; it
+drives 0.5 m and turns 90 degrees on its command topic, in ground truth
+(/gazebo/get_model_state), by SetParam("vel") and by SetVelocity alike."""
+import math
+import os
+import sys
+import unittest
+
+import rosgraph
+import rospy
+import rostest
+from geometry_msgs.msg import Twist
+from nav_msgs.msg import Odometry
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sim_checks import Simulator, angle_difference, wait_until  # noqa: E402
+
+# the two bases, by their model name (= robot namespace): how the plugin drives the wheels
+BASES = ("motor_base", "velocity_base")
+PLUGIN_NODE = "/gazebo_plugin_host"  # sim_bridge.native_plugins.ROS_NODE_NAME
+# the commands the test gives: 0.5 m at 0.25 m/s, a quarter turn at pi/4 rad/s, each 2 s
+SPEED = 0.25
+TURN_RATE = math.pi / 4
+RUN = 2.0
+# the plugin stops a base whose latest command is older than this (its URDF's
+# velocity_command_timeout): the test repeats its command ten times as often
+COMMAND_TIMEOUT = 0.6
+COMMAND_PERIOD = 0.1
+SETTLE = 0.5  # s of simulated time at the commanded speed before a run is measured
+TOLERANCE = 0.05  # of the distance or angle: the wheels' slip
+# s of simulated time: the odometry plugin publishes at 50 Hz, each stamped with the time
+# roscpp has received from /clock at that step
+ODOMETRY_PERIOD = 0.02
+
+
+class CppPluginDrive(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node("cpp_plugin_drive_check")
+        cls.sim = Simulator()
+        for base in BASES:
+            cls.sim.wait_for_model(base)
+        cls.odometry = {}
+        cls.commands = {base: rospy.Publisher(f"/{base}/mobile_base/commands/velocity", Twist,
+                                              queue_size=1) for base in BASES}
+        for base in BASES:
+            rospy.Subscriber(f"/{base}/odom", Odometry,
+                             lambda message, b=base: cls.odometry.__setitem__(b, message))
+        cls.command = Twist()
+        # repeated in simulated time, as a teleop node does
+        cls.timer = rospy.Timer(rospy.Duration(COMMAND_PERIOD), cls._repeat_command)
+        # roscpp's time is 0 until its /clock subscription has connected to /gazebo (as any
+        # node's under use_sim_time): the first stamps may be 0
+        wait_until(lambda: all(base in cls.odometry and not cls.odometry[base].header.stamp.is_zero()
+                               for base in BASES), "both bases' odometry in simulated time")
+
+    @classmethod
+    def _repeat_command(cls, _event):
+        for publisher in cls.commands.values():
+            publisher.publish(cls.command)
+
+    def _run(self, linear, angular):
+        """Both bases at the command, settled, then RUN s measured in ground truth (bracketed
+        by pauses). Returns (elapsed simulated time, {base: (truth before, after)})."""
+        command = Twist()
+        command.linear.x, command.angular.z = linear, angular
+        type(self).command = command
+        self.sim.wait_sim_time(self.sim.sim_time() + SETTLE)
+        self.sim.pause()
+        start = self.sim.sim_time()
+        before = {base: self.sim.truth(base) for base in BASES}
+        self.sim.unpause()
+        self.sim.wait_sim_time(start + RUN)
+        self.sim.pause()
+        elapsed = self.sim.sim_time() - start
+        after = {base: self.sim.truth(base) for base in BASES}
+        type(self).command = Twist()
+        self.sim.unpause()
+        self.sim.wait_sim_time(self.sim.sim_time() + SETTLE)  # stopped again
+        return elapsed, {base: (before[base], after[base]) for base in BASES}
+
+    def test_1_topics_are_in_the_robots_namespace_on_the_simulators_roscpp_node(self):
+        master = rosgraph.Master("/cpp_plugin_drive_check")
+        publishers, subscribers, _ = master.getSystemState()
+        publishers, subscribers = dict(publishers), dict(subscribers)
+        for base in BASES:
+            self.assertEqual(publishers.get(f"/{base}/odom"), [PLUGIN_NODE])
+            self.assertIn(PLUGIN_NODE, subscribers.get(f"/{base}/mobile_base/commands/velocity"))
+        # use_sim_time: roscpp follows /clock, which the rospy node /gazebo publishes
+        self.assertIn(PLUGIN_NODE, subscribers["/clock"])
+        self.assertEqual(publishers["/clock"], ["/gazebo"])
+        # both nodes registered and answering (a second /gazebo would have shut one down)
+        for node in ("/gazebo", PLUGIN_NODE):
+            self.assertTrue(rosgraph.Master("/check").lookupNode(node))
+        frames = self.odometry[BASES[0]]
+        self.assertEqual((frames.header.frame_id, frames.child_frame_id),
+                         ("odom", "base_footprint"))
+
+    def test_2_odometry_is_stamped_in_simulated_time(self):
+        self.sim.pause()
+        paused_at = self.sim.sim_time()
+        self.odometry.clear()
+        self.sim.unpause()
+        wait_until(lambda: BASES[0] in self.odometry, "odometry after the unpause")
+        stamp = self.odometry[BASES[0]].header.stamp.to_sec()
+        now = self.sim.sim_time()
+        self.assertGreaterEqual(stamp, paused_at - ODOMETRY_PERIOD)
+        self.assertLessEqual(stamp, now)
+
+    def test_3_half_a_metre_straight(self):
+        elapsed, runs = self._run(SPEED, 0.0)
+        for base, (before, after) in runs.items():
+            travelled = math.hypot(after[0] - before[0], after[1] - before[1])
+            rospy.loginfo("%s: %.4f m in %.3f s", base, travelled, elapsed)
+            self.assertAlmostEqual(travelled, SPEED * elapsed, delta=SPEED * elapsed * TOLERANCE,
+                                   msg=base)
+            self.assertLess(abs(angle_difference(after[2], before[2])), TOLERANCE, msg=base)
+
+    def test_4_a_quarter_turn(self):
+        elapsed, runs = self._run(0.0, TURN_RATE)
+        for base, (before, after) in runs.items():
+            turned = angle_difference(after[2], before[2])
+            rospy.loginfo("%s: %.4f rad in %.3f s", base, turned, elapsed)
+            self.assertAlmostEqual(turned, TURN_RATE * elapsed,
+                                   delta=TURN_RATE * elapsed * TOLERANCE, msg=base)
+
+    def test_5_a_command_that_is_not_repeated_stops_after_the_timeout(self):
+        self.timer.shutdown()
+        start = {base: self.sim.truth(base) for base in BASES}
+        forward = Twist()
+        forward.linear.x = SPEED
+        for publisher in self.commands.values():
+            publisher.publish(forward)
+        self.sim.wait_sim_time(self.sim.sim_time() + 3 * COMMAND_TIMEOUT)
+        middle = {base: self.sim.truth(base) for base in BASES}
+        self.sim.wait_sim_time(self.sim.sim_time() + COMMAND_TIMEOUT)
+        end = {base: self.sim.truth(base) for base in BASES}
+        for base in BASES:
+            moved = math.hypot(middle[base][0] - start[base][0], middle[base][1] - start[base][1])
+            self.assertGreater(moved, SPEED * COMMAND_TIMEOUT / 2, msg=base)
+            self.assertLess(moved, SPEED * COMMAND_TIMEOUT * (1 + TOLERANCE) + 0.01, msg=base)
+            still = math.hypot(end[base][0] - middle[base][0], end[base][1] - middle[base][1])
+            rospy.loginfo("%s: %.4f m on one command, then %.4f m", base, moved, still)
+            self.assertLess(still, 0.005, msg=base)
+
+
+if __name__ == "__main__":
+    rostest.rosrun("gazebo_ros", "cpp_plugin_drive", CppPluginDrive)
