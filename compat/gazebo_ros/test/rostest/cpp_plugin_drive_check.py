@@ -3,17 +3,23 @@
 sim_bridge with roscpp, as under Gazebo: its topics in the robot's namespace, published by
 the simulator's roscpp node beside the rospy node /gazebo, stamped in simulated time; it
 drives 0.5 m and turns 90 degrees on its command topic, in ground truth
-(/gazebo/get_model_state), by SetParam("vel") and by SetVelocity alike."""
+(/gazebo/get_model_state), by SetParam("vel") and by SetVelocity alike. A base spawned in
+spawn_model's default namespace has its topics at the root, and one whose plugin names a
+joint it does not have spawns without the plugin, the error named."""
 import math
 import os
+import subprocess
 import sys
 import unittest
 
 import rosgraph
+import rospkg
 import rospy
 import rostest
-from geometry_msgs.msg import Twist
+from gazebo_msgs.srv import SpawnModel
+from geometry_msgs.msg import Pose, Twist
 from nav_msgs.msg import Odometry
+from rosgraph_msgs.msg import Log
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sim_checks import Simulator, angle_difference, wait_until  # noqa: E402
@@ -21,6 +27,8 @@ from sim_checks import Simulator, angle_difference, wait_until  # noqa: E402
 # the two bases, by their model name (= robot namespace): how the plugin drives the wheels
 BASES = ("motor_base", "velocity_base")
 PLUGIN_NODE = "/gazebo_plugin_host"  # sim_bridge.native_plugins.ROS_NODE_NAME
+# spawned by spawn_model without -robot_namespace: the plugin's namespace is "//"
+ROOT_BASE = "root_base"
 # the commands the test gives: 0.5 m at 0.25 m/s, a quarter turn at pi/4 rad/s, each 2 s
 SPEED = 0.25
 TURN_RATE = math.pi / 4
@@ -86,9 +94,10 @@ class CppPluginDrive(unittest.TestCase):
         master = rosgraph.Master("/cpp_plugin_drive_check")
         publishers, subscribers, _ = master.getSystemState()
         publishers, subscribers = dict(publishers), dict(subscribers)
-        for base in BASES:
-            self.assertEqual(publishers.get(f"/{base}/odom"), [PLUGIN_NODE])
-            self.assertIn(PLUGIN_NODE, subscribers.get(f"/{base}/mobile_base/commands/velocity"))
+        for namespace in (*BASES, ""):  # the third, ROOT_BASE's, at the root
+            prefix = f"/{namespace}" if namespace else ""
+            self.assertEqual(publishers.get(f"{prefix}/odom"), [PLUGIN_NODE])
+            self.assertIn(PLUGIN_NODE, subscribers.get(f"{prefix}/mobile_base/commands/velocity"))
         # use_sim_time: roscpp follows /clock, which the rospy node /gazebo publishes
         self.assertIn(PLUGIN_NODE, subscribers["/clock"])
         self.assertEqual(publishers["/clock"], ["/gazebo"])
@@ -145,6 +154,32 @@ class CppPluginDrive(unittest.TestCase):
             still = math.hypot(end[base][0] - middle[base][0], end[base][1] - middle[base][1])
             rospy.loginfo("%s: %.4f m on one command, then %.4f m", base, moved, still)
             self.assertLess(still, 0.005, msg=base)
+
+    def test_6_a_plugin_without_its_joint_is_named_and_the_base_spawns(self):
+        warnings = []
+        log = rospy.Subscriber("/rosout", Log, lambda message: warnings.append(message.msg)
+                               if message.level == Log.WARN else None)
+        wait_until(lambda: any(connection.callerid_pub == "/gazebo"
+                               for connection in log.impl.connections), "/gazebo's /rosout")
+        description = subprocess.run(
+            ["xacro", os.path.join(rospkg.RosPack().get_path("kobuki_style_gazebo_plugins"),
+                                   "urdf", "kobuki_style.urdf.xacro"),
+             "left_wheel_joint_name:=missing_joint"],
+            capture_output=True, text=True, check=True).stdout
+        spawn = rospy.ServiceProxy("/gazebo/spawn_urdf_model", SpawnModel)
+        pose = Pose()
+        pose.position.y, pose.orientation.w = -3.0, 1.0
+        response = spawn("broken_base", description, "broken_base", pose, "world")
+        self.assertTrue(response.success, response.status_message)
+        self.sim.wait_for_model("broken_base")
+        expected = ("model 'broken_base': plugin 'kobuki_style_controller' "
+                    "(libgazebo_ros_kobuki_style.so) not loaded")
+        wait_until(lambda: any(expected in w for w in warnings), "the plugin's warning")
+        [warning] = [w for w in warnings if expected in w]
+        self.assertIn("KobukiStyle(ns = broken_base/): couldn't get wheel hinge joint named "
+                      "missing_joint", warning)
+        publishers = dict(rosgraph.Master("/check").getSystemState()[0])
+        self.assertNotIn("/broken_base/odom", publishers)
 
 
 if __name__ == "__main__":
