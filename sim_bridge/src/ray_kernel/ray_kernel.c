@@ -1,14 +1,20 @@
 /*
  * sim_bridge's compiled laser kernel: many rays from one origin against boxes, cylinders,
- * spheres and planes, nearest hit per ray. Loaded with ctypes by sim_bridge.ray_kernel;
+ * spheres, planes and convex hulls, nearest hit per ray. Loaded with ctypes by sim_bridge.ray_kernel;
  * the numpy reference it must agree with is sim_bridge.ray_caster.
  *
  * A shape is one row of SBR_STRIDE doubles (the layout sim_bridge.ray_kernel packs):
- *   [0]      kind (SBR_BOX, SBR_CYLINDER, SBR_SPHERE, SBR_PLANE)
+ *   [0]      kind (SBR_BOX, SBR_CYLINDER, SBR_SPHERE, SBR_PLANE, SBR_HULL)
  *   [1..3]   centre in the world
  *   [4..12]  rotation, row-major (world <- shape)
- *   [13..15] box: half sizes; cylinder: radius, half length; sphere: radius
+ *   [13..15] box: half sizes; cylinder: radius, half length; sphere: radius; hull: its
+ *            first plane's index in `planes` and how many it has
  *   [16]     bounding-sphere radius (planes: +inf, never culled)
+ *
+ * A hull's planes are rows of 4 doubles in the shape's frame, n_x n_y n_z d: an outward
+ * unit normal n and an offset d, the hull being the points x with n.x <= d for every one
+ * (a mesh's convex hull, sim_bridge.convex_hulls). They are fixed in the shape's frame, so
+ * a moving hull is re-placed by its row alone.
  *
  * Distances are from the origin along unit directions; a surface counts from `near` to
  * `far` (a ray whose point at `near` is inside a shape reads `near`, as the reference does
@@ -27,6 +33,9 @@
 #define SBR_CYLINDER 1
 #define SBR_SPHERE 2
 #define SBR_PLANE 3
+#define SBR_HULL 4
+/* the calling convention's version: 2 added the planes of hulls (sbr_version) */
+#define SBR_VERSION 2
 /* a direction component smaller than this is parallel to a face (the reference's PARALLEL) */
 #define SBR_PARALLEL 1e-12
 /* a ray parallel to a face and this close outside its plane (m) touches it (the
@@ -73,7 +82,30 @@ static int quadric(double a, double b, double c, double *t0, double *t1) {
 }
 
 /* The interval of t (from the origin) during which the ray is inside the shape; 0: none. */
-static int inside_interval(const Prepared *p, const double *d, double *t0, double *t1) {
+/* Narrows [*t0, *t1] to where o + t d is inside every plane n.x <= c (Cyrus-Beck); 0: empty.
+ * A ray parallel to a plane is inside it all along or never, as a box's slab. */
+static int clip(const double *plane, int count, const double *o, double dx, double dy,
+                double dz, double *t0, double *t1) {
+    for (int k = 0; k < count; ++k, plane += 4) {
+        double rate = plane[0] * dx + plane[1] * dy + plane[2] * dz;
+        double gap = plane[3] - (plane[0] * o[0] + plane[1] * o[1] + plane[2] * o[2]);
+        if (fabs(rate) < SBR_PARALLEL) {
+            if (gap < -SBR_TOUCH) return 0;
+            continue;
+        }
+        double t = gap / rate;
+        if (rate < 0.0) {
+            if (t > *t0) *t0 = t;  /* entering through this plane */
+        } else if (t < *t1) {
+            *t1 = t;               /* leaving through it */
+        }
+        if (*t0 > *t1) return 0;
+    }
+    return 1;
+}
+
+static int inside_interval(const Prepared *p, const double *planes, const double *d,
+                           double *t0, double *t1) {
     const double *r = p->row;
     /* the direction in the shape's frame: R^T d */
     double dx = r[4] * d[0] + r[7] * d[1] + r[10] * d[2];
@@ -103,17 +135,20 @@ static int inside_interval(const Prepared *p, const double *d, double *t0, doubl
         if (fabs(dz) < SBR_PARALLEL) return o[2] <= 0.0;
         if (dz < 0.0) *t0 = -o[2] / dz; else *t1 = -o[2] / dz;
         return *t0 <= *t1;
+    case SBR_HULL:
+        return clip(planes + 4 * (size_t)r[13], (int)r[14], o, dx, dy, dz, t0, t1);
     }
     return 0;
 }
 
 /*
  * Casts n_rays unit directions (n_rays x 3) from origin; out[i]: the distance from the
- * origin to the first surface within [near, far], +inf if none. Returns 0, or -1 when
+ * origin to the first surface within [near, far], +inf if none. `planes`: the hulls'
+ * planes the rows index (may be NULL when no row is a hull). Returns 0, or -1 when
  * memory for the shapes' scratch could not be had.
  */
-int sbr_cast(const double *shapes, int n_shapes, const double *origin, const double *dirs,
-             int n_rays, double near, double far, double *out) {
+int sbr_cast(const double *shapes, int n_shapes, const double *planes, const double *origin,
+             const double *dirs, int n_rays, double near, double far, double *out) {
     Prepared *prepared = malloc(sizeof(Prepared) * (n_shapes > 0 ? n_shapes : 1));
     if (prepared == NULL) return -1;
     int count = 0;
@@ -145,7 +180,7 @@ int sbr_cast(const double *shapes, int n_shapes, const double *origin, const dou
                 if (p->cc - along * along > p->bound2) continue; /* passes beside it */
             }
             double t0, t1;
-            if (!inside_interval(p, d, &t0, &t1) || t1 < near) continue;
+            if (!inside_interval(p, planes, d, &t0, &t1) || t1 < near) continue;
             double t = t0 > near ? t0 : near;
             if (t <= far && t < best) best = t;
         }
@@ -157,3 +192,7 @@ int sbr_cast(const double *shapes, int n_shapes, const double *origin, const dou
 
 /* The row layout's width, so that the Python side can check it loaded a matching build. */
 int sbr_stride(void) { return SBR_STRIDE; }
+
+/* The calling convention's version, so that a build older than the Python side is told
+ * to rebuild instead of being called with arguments it does not take. */
+int sbr_version(void) { return SBR_VERSION; }

@@ -269,13 +269,7 @@ def _convert(path: str, kind: str, target: str) -> None:
 def _vertices(path: str) -> np.ndarray:
     """The vertices of an OBJ or binary STL file (what :func:`loadable_file` returns)."""
     if path.lower().endswith(".stl"):
-        with open(path, "rb") as stream:
-            data = stream.read()
-        count = struct.unpack_from("<I", data, _BINARY_STL_HEADER)[0]
-        records = np.frombuffer(data, dtype=np.dtype([
-            ("normal", "<f4", 3), ("corners", "<f4", (3, 3)), ("attribute", "<u2")]),
-            count=count, offset=_BINARY_STL_HEADER + 4)
-        return records["corners"].reshape(-1, 3).astype(float)
+        return stl_vertices(path)
     rows = []
     with open(path, "rb") as stream:
         for line in stream:
@@ -283,6 +277,17 @@ def _vertices(path: str) -> np.ndarray:
             if len(parts) >= 4 and parts[0] == b"v":
                 rows.append([float(v) for v in parts[1:4]])
     return np.asarray(rows, dtype=float).reshape(-1, 3)
+
+
+def stl_vertices(path: str) -> np.ndarray:
+    """The corners of a binary STL file's triangles (N, 3)."""
+    with open(path, "rb") as stream:
+        data = stream.read()
+    count = struct.unpack_from("<I", data, _BINARY_STL_HEADER)[0]
+    records = np.frombuffer(data, dtype=np.dtype([
+        ("normal", "<f4", 3), ("corners", "<f4", (3, 3)), ("attribute", "<u2")]),
+        count=count, offset=_BINARY_STL_HEADER + 4)
+    return records["corners"].reshape(-1, 3).astype(float)
 
 
 def _local(tag: str) -> str:

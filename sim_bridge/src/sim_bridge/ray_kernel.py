@@ -8,9 +8,11 @@ workspace's setup.bash sets) and then the dynamic loader's own search. When it i
 there, :func:`load` says why and the caller falls back to the numpy reference
 (:mod:`sim_bridge.ray_caster`), which gives the same distances, slower.
 
-:func:`rows` packs :class:`~sim_bridge.ray_caster.Primitive` shapes; :class:`PlacedShapes`
-re-places a moving model's shapes from its links' frames with a few array operations, so
-that the shapes of every robot are placed once per simulated time stamp, for all lasers.
+:func:`rows` packs :class:`~sim_bridge.ray_caster.Primitive` shapes, :func:`planes` the
+planes of the hulls among them (a hull's row names its first plane and how many it has;
+the planes stay in the shape's frame); :class:`PlacedShapes` re-places a moving model's
+shapes from its links' frames with a few array operations, so that the shapes of every
+robot are placed once per simulated time stamp, for all lasers.
 """
 from __future__ import annotations
 
@@ -23,9 +25,10 @@ import numpy as np
 from sim_bridge.ray_caster import Primitive
 
 LIBRARY = "libsim_bridge_rays.so"
-# the row layout shared with ray_kernel.c
+# the row layout and calling convention shared with ray_kernel.c
 STRIDE = 17
-KIND_CODES = {"box": 0, "cylinder": 1, "sphere": 2, "plane": 3}
+VERSION = 2
+KIND_CODES = {"box": 0, "cylinder": 1, "sphere": 2, "plane": 3, "hull": 4}
 KIND, CENTRE, ROTATION, DIMS, BOUND = 0, slice(1, 4), slice(4, 13), slice(13, 16), 16
 
 _DOUBLES = ctypes.POINTER(ctypes.c_double)
@@ -47,26 +50,40 @@ def _dims_and_bound(kind: str, dims: Sequence[float]) -> Tuple[Tuple[float, floa
     raise ValueError(f"no analytic ray casting for {kind}")
 
 
-def rows(primitives: Sequence[Primitive]) -> np.ndarray:
-    """The kernel's rows for shapes placed in the world: (len(primitives), STRIDE)."""
+def rows(primitives: Sequence[Primitive], first_plane: int = 0) -> np.ndarray:
+    """The kernel's rows for shapes placed in the world: (len(primitives), STRIDE); the
+    hulls' planes are :func:`planes` ``(primitives)`` placed from ``first_plane`` on."""
     packed = np.zeros((len(primitives), STRIDE))
     for row, primitive in zip(packed, primitives):
         transform = np.asarray(primitive.transform, dtype=float)
         row[KIND] = KIND_CODES[primitive.kind]
         row[CENTRE] = transform[:3, 3]
         row[ROTATION] = transform[:3, :3].ravel()
-        row[DIMS], row[BOUND] = _dims_and_bound(primitive.kind, primitive.dims)
+        if primitive.kind == "hull":
+            row[DIMS] = (first_plane, len(primitive.planes), 0.0)
+            row[BOUND] = float(primitive.dims[0])
+            first_plane += len(primitive.planes)
+        else:
+            row[DIMS], row[BOUND] = _dims_and_bound(primitive.kind, primitive.dims)
     return packed
+
+
+def planes(primitives: Sequence[Primitive]) -> np.ndarray:
+    """The planes of the hulls among ``primitives``, in their order: (P, 4)."""
+    stacked = [p.planes for p in primitives if p.kind == "hull"]
+    return np.vstack(stacked) if stacked else np.zeros((0, 4))
 
 
 class PlacedShapes:
     """A moving model's shapes, each fixed in one of its frames (``frame_of[i]`` indexes
-    the frames given to :meth:`place`), ``local`` (S, 4, 4) placing it in that frame."""
+    the frames given to :meth:`place`), ``local`` (S, 4, 4) placing it in that frame.
+    ``shapes``: each one's kind and dims (and planes) as a Primitive (its transform unused);
+    its hulls' planes are :attr:`planes`, to be put from ``first_plane`` on."""
 
-    def __init__(self, kinds: Sequence[str], dims: Sequence[Sequence[float]],
-                 local: np.ndarray, frame_of: Sequence[int]):
-        self.template = rows([Primitive(kind, np.eye(4), size)
-                              for kind, size in zip(kinds, dims)])
+    def __init__(self, shapes: Sequence[Primitive], local: np.ndarray,
+                 frame_of: Sequence[int], first_plane: int = 0):
+        self.template = rows(shapes, first_plane)
+        self.planes = planes(shapes)
         self.local = np.asarray(local, dtype=float).reshape(-1, 4, 4)
         self.frame_of = np.asarray(frame_of, dtype=int)
 
@@ -90,18 +107,26 @@ class Kernel:
         self.path = path
         self._cast = library.sbr_cast
         self._cast.restype = ctypes.c_int
-        self._cast.argtypes = [_DOUBLES, ctypes.c_int, _DOUBLES, _DOUBLES, ctypes.c_int,
-                               ctypes.c_double, ctypes.c_double, _DOUBLES]
+        self._cast.argtypes = [_DOUBLES, ctypes.c_int, _DOUBLES, _DOUBLES, _DOUBLES,
+                               ctypes.c_int, ctypes.c_double, ctypes.c_double, _DOUBLES]
 
     def cast(self, shapes: np.ndarray, origin: Sequence[float], directions: np.ndarray,
-             near: float, far: float) -> np.ndarray:
+             near: float, far: float, planes: Optional[np.ndarray] = None) -> np.ndarray:
         """Distances from ``origin`` along unit ``directions`` (N, 3) to the first surface
-        of ``shapes`` (rows) between ``near`` and ``far``; inf where there is none."""
+        of ``shapes`` (rows) between ``near`` and ``far``; inf where there is none.
+        ``planes``: the hulls' planes the rows index (:func:`planes`)."""
         shapes = np.ascontiguousarray(shapes, dtype=float)
+        hulls = shapes[:, KIND] == KIND_CODES["hull"] if len(shapes) else np.zeros(0, bool)
+        planes = np.ascontiguousarray(np.zeros((0, 4)) if planes is None else planes,
+                                      dtype=float)
+        first, count = DIMS.start, DIMS.start + 1
+        if hulls.any() and (shapes[hulls, first] + shapes[hulls, count]).max() > len(planes):
+            raise ValueError("a hull's row names planes beyond those given")
         origin = np.ascontiguousarray(origin, dtype=float)
         directions = np.ascontiguousarray(directions, dtype=float)
         out = np.empty(len(directions))
         status = self._cast(shapes.ctypes.data_as(_DOUBLES), len(shapes),
+                            planes.ctypes.data_as(_DOUBLES),
                             origin.ctypes.data_as(_DOUBLES), directions.ctypes.data_as(_DOUBLES),
                             len(directions), float(near), float(far),
                             out.ctypes.data_as(_DOUBLES))
@@ -147,9 +172,14 @@ def _load() -> Tuple[Optional[Kernel], str]:
             errors.append(f"{candidate} packs {stride} numbers a shape, this module {STRIDE}: "
                           "rebuild the workspace (make)")
             continue
+        version = library.sbr_version() if hasattr(library, "sbr_version") else 1
+        if version != VERSION:
+            errors.append(f"{candidate} is the kernel's version {version}, this module "
+                          f"calls version {VERSION}: rebuild the workspace (make)")
+            continue
         return Kernel(library, candidate), candidate
     return None, (f"{LIBRARY} not found ({'; '.join(errors) or 'not built'}); build the "
                   "workspace (make) for the compiled ray kernel")
 
 
-__all__ = ["Kernel", "PlacedShapes", "STRIDE", "load", "rows"]
+__all__ = ["Kernel", "PlacedShapes", "STRIDE", "load", "planes", "rows"]

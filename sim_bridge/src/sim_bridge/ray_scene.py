@@ -42,15 +42,19 @@ def frames_from_poses(positions: Sequence[Sequence[float]],
     return np.array(rows, dtype=float).reshape(-1, 4, 4)
 
 
-def shape_set(rows: np.ndarray) -> ShapeSet:
-    """The numpy reference's view of kernel rows (for the fallback and for tests)."""
+def shape_set(rows: np.ndarray, planes: np.ndarray) -> ShapeSet:
+    """The numpy reference's view of kernel rows and the hulls' planes they index (for the
+    fallback and for tests)."""
     shapes = ShapeSet([])
+    shapes.planes = planes
     for code, kind in _KIND_NAMES.items():
         chosen = rows[rows[:, KIND] == code]
         if not len(chosen):
             continue
         dims = chosen[:, DIMS]
-        if kind == "box":
+        if kind == "hull":
+            dims = dims[:, :2]
+        elif kind == "box":
             dims = 2.0 * dims
         elif kind == "cylinder":
             dims = np.stack([dims[:, 0], 2.0 * dims[:, 1]], axis=1)
@@ -66,7 +70,7 @@ def shape_set(rows: np.ndarray) -> ShapeSet:
 class _Mover:
     """One moving model's shapes and how to read its frames."""
 
-    def __init__(self, world, model, rows: slice):
+    def __init__(self, world, model, rows: slice, first_plane: int):
         self.rows = rows
         self.robot = model.robot
         if self.robot is not None:
@@ -81,9 +85,9 @@ class _Mover:
             frame_of = [0] * len(model.ray_shapes)
         self.world = world
         self.shapes = ray_kernel.PlacedShapes(
-            [s.kind for s in model.ray_shapes],
-            [_dims(s) for s in model.ray_shapes],
-            np.array([s.local for s in model.ray_shapes]).reshape(-1, 4, 4), frame_of)
+            [s.placed(np.eye(4)) for s in model.ray_shapes],
+            np.array([s.local for s in model.ray_shapes]).reshape(-1, 4, 4), frame_of,
+            first_plane)
 
     def frames(self) -> np.ndarray:
         if self.robot is None:
@@ -104,16 +108,6 @@ class _Mover:
             self.shapes.place(self.frames(), buffer[self.rows])
 
 
-def _dims(shape) -> Sequence[float]:
-    if shape.kind == "box":
-        return tuple(shape.size)
-    if shape.kind == "cylinder":
-        return (shape.radius, shape.length)
-    if shape.kind == "sphere":
-        return (shape.radius,)
-    return ()
-
-
 class RayScene:
     """The scene's shapes as kernel rows, static ones packed once, moving ones placed once
     per time stamp; :meth:`cast` one scan."""
@@ -127,12 +121,17 @@ class RayScene:
         count = len(static) + sum(len(m.ray_shapes) for m in moving)
         self.rows = np.zeros((count, STRIDE))
         self.rows[:len(static)] = ray_kernel.rows(static)
+        # the hulls' planes, in their shapes' frames: never re-placed
+        planes = [ray_kernel.planes(static)]
         self.movers = []
-        start = len(static)
+        start, first_plane = len(static), len(planes[0])
         for model in moving:
             end = start + len(model.ray_shapes)
-            self.movers.append(_Mover(world, model, slice(start, end)))
-            start = end
+            mover = _Mover(world, model, slice(start, end), first_plane)
+            self.movers.append(mover)
+            planes.append(mover.shapes.planes)
+            start, first_plane = end, first_plane + len(mover.shapes.planes)
+        self.planes = np.ascontiguousarray(np.vstack(planes))
         self._placed_at = None
         self._static_set: Optional[ShapeSet] = None
         self._moving_set: Optional[ShapeSet] = None
@@ -156,12 +155,12 @@ class RayScene:
         ``near`` and ``far`` (inf where there is none), the moving shapes as at ``stamp``."""
         self._place(stamp)
         if self.kernel is not None:
-            return self.kernel.cast(self.rows, origin, directions, near, far)
+            return self.kernel.cast(self.rows, origin, directions, near, far, self.planes)
         # the numpy reference on the same rows, its rays starting at near
         if self._static_set is None:
-            self._static_set = shape_set(self.rows[:self._static_count])
+            self._static_set = shape_set(self.rows[:self._static_count], self.planes)
         if self._moving_set is None:
-            self._moving_set = shape_set(self.rows[self._static_count:])
+            self._moving_set = shape_set(self.rows[self._static_count:], self.planes)
         starts = origin + directions * near
         distances = near + cast([self._static_set, self._moving_set], starts, directions)
         return np.where(distances <= far, distances, np.inf)

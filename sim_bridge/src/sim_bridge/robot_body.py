@@ -186,6 +186,36 @@ def prepare_meshes(link: ET.Element, source: str, warn) -> None:
         warn(f"{source}: link '{name}': collision mesh '{uri}' {error}; {done}")
 
 
+@dataclass(frozen=True)
+class CollisionMesh:
+    """A collision mesh as pybullet loaded it: its link, its <origin> in the link's frame
+    (4 x 4), the file pybullet read (converted if need be) and the URDF scale."""
+
+    link: str
+    origin: np.ndarray
+    path: str
+    scale: np.ndarray
+
+
+def collision_meshes(prepared: str) -> List[CollisionMesh]:
+    """The collision meshes of the URDF text :func:`prepare_urdf` made (those that could be
+    read: the rest were replaced or dropped there)."""
+    found = []
+    for link in ET.fromstring(prepared).findall("link"):
+        for collision in link.findall("collision"):
+            mesh = collision.find("geometry/mesh")
+            if mesh is None:
+                continue
+            origin = collision.find("origin")
+            transform = np.eye(4)
+            transform[:3, :3] = rpy_matrix(*_vector(origin.get("rpy") if origin is not None
+                                                    else None))
+            transform[:3, 3] = _vector(origin.get("xyz") if origin is not None else None)
+            found.append(CollisionMesh(link.get("name", ""), transform, mesh.get("filename"),
+                                       _mesh_scale(mesh)))
+    return found
+
+
 def _is_caster(tags: GazeboTags, link: str) -> bool:
     surface = tags.surfaces.get(link)
     return surface is not None and surface.mu1 == 0.0 and surface.mu2 == 0.0
@@ -335,6 +365,8 @@ class RobotBody:
         self.client = client
         self.model = model
         prepared = prepare_urdf(xml, model, tags, warn)
+        # what lasers cast against as convex hulls (World.spawn_urdf)
+        self.collision_meshes = collision_meshes(prepared)
         flags = pb.URDF_USE_INERTIA_FROM_FILE | pb.URDF_USE_IMPLICIT_CYLINDER
         colliding = self_colliding_bodies(model, tags)
         if colliding:

@@ -16,7 +16,9 @@ frame's (a robot's root link, an SDF model's ``<pose>``).
 
 Static scenery is one fixed rigid body per shape (``useMaximalCoordinates``): a fixed
 multi-link body would have all its links re-posed every step (four times the step cost
-in a 40-object hall). Lasers do not ask pybullet: see :mod:`sim_bridge.ray_caster`.
+in a 40-object hall). Lasers do not ask pybullet: see :mod:`sim_bridge.ray_caster` (a
+moving body's collision mesh: its convex hulls, :mod:`sim_bridge.convex_hulls`), except
+for static scenery's meshes, which collide as their triangles.
 """
 from __future__ import annotations
 
@@ -28,6 +30,7 @@ from typing import Any, Dict, List, Mapping, Optional, Sequence, Set, Tuple, Uni
 import numpy as np
 import pybullet as pb
 
+from sim_bridge.convex_hulls import mesh_hulls
 from sim_bridge.external_forces import (BodyWrench, ExternalForces, JointEffort, LinkMasses,
                                         Window, centre_of_mass)
 from sim_bridge.gazebo_tags import GazeboTags, read_gazebo_tags
@@ -83,7 +86,8 @@ MAX_TIME_STEP = float(2 ** 32 - 1)
 @dataclass(frozen=True)
 class RayShape:
     """A moving model's collision shape as lasers see it: ``local`` places it in its link's
-    frame (``link`` None: the free body's frame)."""
+    frame (``link`` None: the free body's frame). A hull (one object of a collision mesh):
+    ``planes`` in its own frame, ``radius`` its bounding sphere's about that frame's origin."""
 
     link: Optional[str]
     local: np.ndarray
@@ -91,10 +95,30 @@ class RayShape:
     size: Optional[Sequence[float]] = None
     radius: Optional[float] = None
     length: Optional[float] = None
+    planes: Optional[np.ndarray] = None
 
     def placed(self, frame: np.ndarray) -> Primitive:
         return primitive_for(self.kind, frame @ self.local, size=self.size, radius=self.radius,
-                             length=self.length)
+                             length=self.length, planes=self.planes)
+
+
+def hull_ray_shapes(link: Optional[str], local: np.ndarray, path: str,
+                    scale: Sequence[float]) -> Tuple[List[RayShape], bool]:
+    """The convex hulls pybullet collides a moving mesh as (one per object of the file it
+    loads, ``path``, scaled), as lasers' shapes placed by ``local`` in the link's frame; and
+    whether some of it has no hull here (an object with no volume, an unreadable file),
+    which pybullet must then answer for."""
+    try:
+        hulls, flat = mesh_hulls(path, scale)
+    except (OSError, ValueError):
+        return [], True
+    shapes = []
+    for hull in hulls:
+        centred = np.eye(4)
+        centred[:3, 3] = hull.centre
+        shapes.append(RayShape(link, local @ centred, "hull", radius=hull.radius,
+                               planes=hull.planes))
+    return shapes, flat > 0
 
 
 class SimError(ValueError):
@@ -124,8 +148,9 @@ class Model:
     # moving models: their shapes for lasers, placed each scan from the bodies' poses
     ray_shapes: List[RayShape] = field(default_factory=list)
     has_mesh: bool = False
-    # the pybullet (body, link) pairs holding its collision meshes, which lasers cast through
-    # pybullet (the kernel knows only primitive shapes)
+    # the pybullet (body, link) pairs holding collision meshes that lasers cast through
+    # pybullet: static scenery's (concave: their triangles) and what has no hull in
+    # ray_shapes (a flat object, a link whose mesh was replaced by a box)
     mesh_holders: List[Tuple[int, int]] = field(default_factory=list)
     # the links, joints and collisions Gazebo shows (see sim_bridge.model_structure)
     structure: Structure = field(default_factory=lambda: Structure(()))
@@ -461,8 +486,6 @@ class World:
             self._create_static_bodies(model)
         else:
             model.body = self._free_body(spec)
-            if model.has_mesh:
-                model.mesh_holders = [(model.body, -1)]
             # pybullet's base is the link's centre of mass
             link_pose = pose6_to_position_quaternion(spec.links[0].pose)
             inertial = pb.getDynamicsInfo(model.body, -1, physicsClientId=self.client)
@@ -472,6 +495,16 @@ class World:
                 RayShape(None, pose6_matrix(link.pose) @ pose6_matrix(shape.pose), shape.kind,
                          shape.size, shape.radius, shape.length)
                 for link in spec.links for shape in link.collisions if shape.kind != "mesh"]
+            for link in spec.links:
+                for shape in link.collisions:
+                    if shape.kind != "mesh":
+                        continue
+                    hulls, unmatched = hull_ray_shapes(
+                        None, pose6_matrix(link.pose) @ pose6_matrix(shape.pose),
+                        shape.filename, shape.scale)
+                    model.ray_shapes.extend(hulls)
+                    if unmatched:
+                        model.mesh_holders = [(model.body, -1)]
         self.models[spec.name] = model
         self._scene_changed()
         self._load_native_plugins(spec.name, spec.plugins, namespace)
@@ -722,14 +755,23 @@ class World:
             raise
         model.has_mesh = any(s.geometry.kind == "mesh" for link in description.links.values()
                              for s in link.collisions)
-        if model.has_mesh:  # every link: a mesh's link may be lumped into another
-            model.mesh_holders = [(robot.id, index) for index in
-                                  range(-1, pb.getNumJoints(robot.id, physicsClientId=self.client))]
         model.ray_shapes = [
             RayShape(link.name, origin_transform(shape.origin), shape.geometry.kind,
                      shape.geometry.size, shape.geometry.radius, shape.geometry.length)
             for link in description.links.values() for shape in link.collisions
             if shape.geometry.kind != "mesh"]
+        # collision meshes as pybullet loaded them: their hulls; a link whose mesh could not
+        # be read (a box of its visual stands in) or has no hull here stays pybullet's
+        held = {link.name for link in description.links.values()
+                if sum(s.geometry.kind == "mesh" for s in link.collisions)
+                > sum(m.link == link.name for m in robot.collision_meshes)}
+        for mesh in robot.collision_meshes:
+            hulls, unmatched = hull_ray_shapes(mesh.link, mesh.origin, mesh.path, mesh.scale)
+            model.ray_shapes.extend(hulls)
+            if unmatched:
+                held.add(mesh.link)
+        model.mesh_holders = [(robot.id, robot.link_index[link]) for link in sorted(held)
+                              if link in robot.link_index]
         self.models[name] = model
         self._scene_changed()
         self._load_native_plugins(name, [spec.element for spec in tags.plugins], namespace)
@@ -1505,14 +1547,15 @@ class World:
                   far: float, reference: bool = False) -> np.ndarray:
         """Distances from ``origin`` along unit ``directions`` to the first surface between
         ``near`` and ``far`` (inf where there is none). Analytic against the scene's
-        primitive shapes (:mod:`sim_bridge.ray_scene`: the compiled kernel, moving shapes
-        placed once per time stamp); through pybullet when a mesh is in the scene.
+        primitive shapes and moving meshes' convex hulls (:mod:`sim_bridge.ray_scene`: the
+        compiled kernel, moving shapes placed once per time stamp); through pybullet for the
+        rays that pass by a static mesh (see :attr:`Model.mesh_holders`).
         ``reference``: the numpy reference, every shape placed anew (what tests check the
-        fast path against)."""
+        fast path against); pybullet alone when a mesh is pybullet's."""
         origin = np.asarray(origin, dtype=float)
         directions = np.asarray(directions, dtype=float)
         if self._has_meshes is None:
-            self._has_meshes = any(m.has_mesh for m in self.models.values())
+            self._has_meshes = any(m.mesh_holders for m in self.models.values())
         if self._has_meshes and reference:
             return self._cast_through_pybullet(origin, directions, near, far)
         if reference:
@@ -1525,10 +1568,9 @@ class World:
             self._ray_scene = RayScene(self, kernel)
         distances = self._ray_scene.cast(self.now_ns, origin, directions, near, far)
         if self._has_meshes:
-            # the rays that pass through a mesh's bounding box: pybullet's answer for them
-            # (it knows every shape); the kernel's elsewhere, where no mesh can be hit. A
-            # 720-beam scan beside two meshed cones: 0.1 ms, where pybullet for every ray
-            # took 2.3 (tools/bench and README, "Lasers")
+            # the rays that pass through a static mesh's bounding box: pybullet's answer for
+            # them (it knows every shape); the kernel's elsewhere, where no such mesh can be
+            # hit (tools/bench and README, "Lasers")
             through = self._rays_through_mesh_bounds(origin, directions, near, far)
             if through.any():
                 distances = distances.copy()

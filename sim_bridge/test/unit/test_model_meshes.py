@@ -258,20 +258,131 @@ def test_each_mesh_is_closed_and_faces_outward(model):
     assert solid.volume > 0
 
 
-def test_lasers_cast_the_meshes_through_pybullet_and_the_rest_through_the_kernel(world):
-    # with a mesh in the scene only the rays through a mesh's bounding box go to pybullet
-    # (World.cast_rays); every ray must read what pybullet alone reads (reference=True)
+# pybullet pads a convex hull by a collision margin: a ray meets a 1 m cube's hull 1.000 mm
+# before its face (measured at scales 0.1, 1 and 10). The kernel casts the hull itself, as
+# Gazebo's laser meets the mesh itself: a reading is the margin over the cosine of the
+# beam's angle to the face beyond pybullet's (1 mm head-on, 2.7 mm measured on a beam
+# grazing the cone's foot). With its planes pushed out by the margin the kernel reads
+# pybullet's within PADDED: pybullet's padding rounds the hull's edges and corners, pushed
+# planes do not (0.99 mm measured on a beam past a corner of the free cone's square foot).
+PYBULLET_HULL_MARGIN = 0.001
+PADDED = 0.002
+
+
+@pytest.fixture
+def ray_tests(monkeypatch):
+    """The number of rays each call of pybullet's rayTestBatch (the lasers' pybullet path)
+    was given."""
+    calls = []
+    original = pb.rayTestBatch
+
+    def counted(*args, **kwargs):
+        calls.append(len(args[0] if args else kwargs["rayFromPositions"]))
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(pb, "rayTestBatch", counted)
+    return calls
+
+
+def level_scans(origin, heights, beams=720):
+    """(origins, directions) of level scans of ``beams`` from ``origin`` at each height."""
+    angles = np.linspace(-np.pi, np.pi, beams, endpoint=False)
+    directions = np.stack([np.cos(angles), np.sin(angles), np.zeros_like(angles)], axis=1)
+    return [((origin[0], origin[1], height), directions) for height in heights]
+
+
+def assert_reads_as_pybullet(world, origin, directions, near, far):
+    """The kernel's readings against pybullet's rayTestBatch: each beam it sees hit,
+    pybullet too, and not farther; with the hulls' planes pushed out by the margin, the
+    same beams hit, and those that meet the hull itself within PADDED (a beam grazing a
+    hull within the margin hits pybullet's padding only)."""
+    fast = world.cast_rays(origin, directions, near, far)
+    bullet = world._cast_through_pybullet(np.asarray(origin), directions, near, far)
+    hits = np.isfinite(fast)
+    assert np.isfinite(bullet[hits]).all()
+    assert (fast[hits] - bullet[hits]).min() >= -PADDED
+    planes = world._ray_scene.planes  # only hulls' here: no static mesh in these scenes
+    planes[:, 3] += PYBULLET_HULL_MARGIN
+    try:
+        padded = world.cast_rays(origin, directions, near, far)
+    finally:
+        planes[:, 3] -= PYBULLET_HULL_MARGIN
+    assert np.array_equal(np.isinf(padded), np.isinf(bullet))
+    # along a beam grazing the hull, a round padding and flat planes part by millimetres (4
+    # measured): compared where the hull itself is hit, off the edges of what a scan sees
+    # (a beam whose neighbours hit too)
+    inner = hits & np.roll(hits, 1) & np.roll(hits, -1)
+    assert np.abs(padded[inner] - bullet[inner]).max() <= PADDED
+    return fast
+
+
+def test_lasers_cast_the_free_cone_through_the_kernel_as_pybullet_collides_it(world,
+                                                                             ray_tests):
+    # a moving mesh is cast as its convex hulls (World.cast_rays): no ray goes to pybullet
+    # (before: the rays through the cone's bounding box, 18 us each)
     spec, _ = loaded()
     world.load_world(spec)
-    world.add_sdf_model(dropped_box("crate", "-3.6 0.6 0.05"))
     run(world, 0.5)
-    angles = np.linspace(-np.pi, np.pi, 720, endpoint=False)
-    directions = np.stack([np.cos(angles), np.sin(angles), np.zeros_like(angles)], axis=1)
-    origin = (-3.0, -1.0, 0.2)  # not level with the box's top (0.3 m), which grazes
-    through = world._rays_through_mesh_bounds(np.array(origin), directions, 0.1, 30.0)
-    assert 0 < through.sum() < 100  # the cone's few rays, not the whole scan
-    fast = world.cast_rays(origin, directions, 0.1, 30.0)
-    alone = world.cast_rays(origin, directions, 0.1, 30.0, reference=True)
-    assert np.isinf(fast).sum() == np.isinf(alone).sum()
-    hits = np.isfinite(alone)
-    assert np.abs(fast[hits] - alone[hits]).max() < 0.002
+    (x, y, _), _ = world.pose("Construction Cone")
+    assert world.model("Construction Cone").mesh_holders == []
+    for origin, directions in level_scans((-3.0, -1.0), (0.05, 0.2, 0.5, 0.9)):
+        del ray_tests[:]
+        world.cast_rays(origin, directions, 0.1, 30.0)
+        assert ray_tests == []
+        fast = assert_reads_as_pybullet(world, origin, directions, 0.1, 30.0)
+        hits = np.isfinite(fast)
+        points = np.asarray(origin) + directions[hits] * fast[hits, None]
+        assert (np.hypot(points[:, 0] - x, points[:, 1] - y) < CONE_FOOT).any()
+
+
+def coned_robot():
+    """A robot whose mast link collides as the construction cone's mesh (scaled, turned,
+    off its link's origin), its laser behind the mast above the base box."""
+    return f"""<robot name="coned">
+      <link name="base_link"><inertial><mass value="5"/>
+        <inertia ixx="0.05" iyy="0.05" izz="0.05" ixy="0" ixz="0" iyz="0"/></inertial>
+        <collision><origin xyz="0 0 0.05"/><geometry><box size="0.6 0.4 0.1"/></geometry>
+        </collision></link>
+      <joint name="mast_joint" type="fixed"><parent link="base_link"/><child link="mast"/>
+        <origin xyz="0.12 0.02 0.1" rpy="0 0 0.3"/></joint>
+      <link name="mast"><inertial><mass value="0.5"/>
+        <inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial>
+        <collision><origin xyz="0.01 0 0" rpy="0 0 0.2"/><geometry>
+          <mesh filename="file://{MESHES['construction_cone']}" scale="5 5 5"/></geometry>
+        </collision></link>
+      <joint name="laser_joint" type="fixed"><parent link="base_link"/><child link="laser"/>
+        <origin xyz="-0.2 0 0.3"/></joint>
+      <link name="laser"/>
+      <gazebo reference="laser"><sensor type="ray" name="scanner"><update_rate>20</update_rate>
+        <ray><scan><horizontal><samples>720</samples><min_angle>-3.14159</min_angle>
+          <max_angle>3.14159</max_angle></horizontal></scan>
+          <range><min>0.1</min><max>10.0</max></range></ray>
+        <plugin name="laser" filename="libgazebo_ros_laser.so"><topicName>scan</topicName>
+          <frameName>laser</frameName></plugin></sensor></gazebo>
+    </robot>"""
+
+
+def test_a_robots_mesh_link_is_cast_by_the_kernel_as_pybullet_collides_it(world, ray_tests):
+    # a robot with a mesh link sent every beam of its own laser to pybullet (its laser is
+    # within the mesh links' boxes); now none, and each reads pybullet's within 2 mm
+    from sim_bridge.plugins.laser import Laser
+    model = world.spawn_urdf("coned", coned_robot(), position=(1.0, 2.0, 0.0),
+                             orientation=tuple(pb.getQuaternionFromEuler((0, 0, 0.7))))
+    run(world, 0.3)
+    assert model.mesh_holders == []
+    assert sum(shape.kind == "hull" for shape in model.ray_shapes) == 8  # the cone's parts
+    laser = next(p for p in model.plugins if isinstance(p, Laser))
+    del ray_tests[:]
+    laser.measure()
+    assert ray_tests == []
+    origin, orientation = laser.sensor_pose()
+    directions = laser.directions @ np.array(pb.getMatrixFromQuaternion(orientation)).reshape(3, 3).T
+    mast = np.array(model.robot.link_pose("mast")[0])
+    fast = assert_reads_as_pybullet(world, origin, directions, laser.range_min,
+                                    laser.range_max)
+    # the mast in front: the beam straight at it meets it within a few cm of the laser
+    assert 0.1 < np.min(fast) < 0.4
+    # others' beams cast at the robot from outside, level and slanted
+    for height in (0.15, 0.35, 0.55):
+        for origin_, directions_ in level_scans(mast[:2] + (1.5, -0.5), (height,)):
+            assert_reads_as_pybullet(world, origin_, directions_, 0.1, 10.0)

@@ -315,3 +315,74 @@ def test_frames_from_poses_are_tfs_transforms():
     assert frames.shape == (20, 4, 4)
     assert np.abs(frames - np.array(expected)).max() < 1e-12
     assert frames_from_poses([], []).shape == (0, 4, 4)
+
+
+# --- convex hulls (moving bodies' collision meshes) --------------------------------------
+def random_pose(rng):
+    transform = np.eye(4)
+    transform[:3, :3] = np.array(pb.getMatrixFromQuaternion(
+        pb.getQuaternionFromEuler(rng.uniform(-math.pi, math.pi, 3)))).reshape(3, 3)
+    transform[:3, 3] = rng.uniform(-3, 3, 3)
+    return transform
+
+
+def frustum(bottom, top, height, sides=48):
+    """A cone's frustum as a polygon's corners (the construction cone's bands)."""
+    angles = np.linspace(0, 2 * math.pi, sides, endpoint=False)
+    ring = np.stack([np.cos(angles), np.sin(angles), np.zeros(sides)], axis=1)
+    return np.vstack([ring * [bottom, bottom, 0], ring * [top, top, 0] + [0, 0, height]])
+
+
+def test_a_cube_as_a_hull_reads_as_the_box(kernel):
+    from sim_bridge.convex_hulls import hull_planes
+    rng = np.random.default_rng(SEED)
+    size = np.array([0.4, 1.0, 0.7])
+    corners = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]) * size / 2
+    planes = hull_planes(corners)
+    assert len(planes) == 6
+    transform = random_pose(rng)
+    box = [primitive_for("box", transform, size=size)]
+    hull = [primitive_for("hull", transform, radius=np.linalg.norm(size) / 2, planes=planes)]
+    for origin in [transform[:3, 3], *rng.uniform(-4, 4, (20, 3))]:  # inside, outside
+        directions = rng.normal(size=(500, 3))
+        directions /= np.linalg.norm(directions, axis=1)[:, None]
+        as_box = kernel.cast(ray_kernel.rows(box), origin, directions, 0.05, 20.0)
+        as_hull = kernel.cast(ray_kernel.rows(hull), origin, directions, 0.05, 20.0,
+                              ray_kernel.planes(hull))
+        assert np.array_equal(np.isinf(as_box), np.isinf(as_hull))
+        finite = np.isfinite(as_box)
+        assert np.abs(as_box[finite] - as_hull[finite]).max(initial=0.0) < 1e-9
+        reference = cast([ShapeSet(hull)], origin + directions * 0.05, directions) + 0.05
+        reference = np.where(reference <= 20.0, reference, np.inf)
+        assert_agrees(as_hull, reference, f"cube hull from {origin}")
+
+
+def test_kernel_against_reference_on_random_hulls(kernel):
+    """Hulls of random clouds and of cone frusta, among boxes, from inside and outside."""
+    from sim_bridge.convex_hulls import hull_planes
+    rng = np.random.default_rng(SEED)
+    primitives = []
+    for index in range(30):
+        points = (frustum(*rng.uniform(0.05, 0.6, 3)) if index % 2
+                  else rng.normal(size=(int(rng.integers(4, 200)), 3)) * rng.uniform(0.1, 1))
+        centre = (points.min(axis=0) + points.max(axis=0)) / 2
+        planes = hull_planes(points)
+        planes[:, 3] -= planes[:, :3] @ centre
+        primitives.append(primitive_for(
+            "hull", random_pose(rng), radius=np.linalg.norm(points - centre, axis=1).max(),
+            planes=planes))
+        primitives.append(primitive_for("box", random_pose(rng), size=rng.uniform(0.05, 1, 3)))
+    reference_set = ShapeSet(primitives)
+    rows, planes = ray_kernel.rows(primitives), ray_kernel.planes(primitives)
+    for origin in [*[p.transform[:3, 3] for p in primitives[:6:2]], *rng.uniform(-4, 4, (20, 3))]:
+        directions = rng.normal(size=(500, 3))
+        directions /= np.linalg.norm(directions, axis=1)[:, None]
+        near, far = rng.uniform(0, 0.3), rng.uniform(3, 20)
+        expected = near + cast([reference_set], origin + directions * near, directions)
+        expected = np.where(expected <= far, expected, np.inf)
+        assert_agrees(kernel.cast(rows, origin, directions, near, far, planes), expected,
+                      f"hulls from {origin}")
+        # the fallback's view of the same rows (ray_scene.shape_set) reads the same
+        fallback = near + cast([ray_scene.shape_set(rows, planes)], origin + directions * near,
+                               directions)
+        assert_agrees(np.where(fallback <= far, fallback, np.inf), expected, "shape_set")
