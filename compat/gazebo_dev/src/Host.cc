@@ -8,6 +8,7 @@
 
 #include "gazebo/common/Events.hh"
 #include "gazebo/physics/physics.hh"
+#include "gazebo/sensors/sensors.hh"
 #include "gazebo_compat/Host.hh"
 
 namespace gazebo_compat
@@ -162,6 +163,28 @@ gazebo::physics::ModelPtr Host::Model(const std::string &_name)
   }
   model->Build(links, joints);
   this->models[_name] = model;
+  // its sensors, before any of its plugins loads (Gazebo's Model::LoadPlugins waits for them)
+  const std::string world = this->GetBackend()->WorldName();
+  for (const auto &sensor : this->GetBackend()->Sensors(_name))
+  {
+    gazebo::sensors::SensorPtr made;
+    if (sensor.type == "contact")
+      made.reset(new gazebo::sensors::ContactSensor(world, _name, sensor.link, sensor.name,
+                                                    sensor.type, sensor.updateRate));
+    else if (sensor.type == "ray" || sensor.type == "gpu_ray")
+      made.reset(new gazebo::sensors::RaySensor(world, _name, sensor.link, sensor.name,
+                                                sensor.type, sensor.updateRate,
+                                                sensor.angleMin, sensor.angleMax,
+                                                sensor.samples, sensor.rangeMin,
+                                                sensor.rangeMax));
+    else if (sensor.type == "imu")
+      made.reset(new gazebo::sensors::ImuSensor(world, _name, sensor.link, sensor.name,
+                                                sensor.type, sensor.updateRate));
+    else
+      made.reset(new gazebo::sensors::Sensor(world, _name, sensor.link, sensor.name,
+                                             sensor.type, sensor.updateRate));
+    gazebo::sensors::SensorManager::Instance()->AddSensor(made);
+  }
   return model;
 }
 
@@ -268,6 +291,7 @@ void Host::RemoveModel(const std::string &_name)
   }
   // destroyed outside the lock: a plugin's destructor may join its own threads
   dropped.clear();
+  gazebo::sensors::SensorManager::Instance()->RemoveSensors(_name);
 }
 
 std::vector<std::string> Host::PluginNames(const std::string &_model) const
@@ -359,6 +383,7 @@ void Host::Close()
   }
   modelPlugins.clear();
   worldPlugins.clear();
+  gazebo::sensors::SensorManager::Instance()->Clear();
   std::lock_guard<std::recursive_mutex> lock(this->mutex);
   this->backend.reset();
 }

@@ -24,9 +24,11 @@
 
 namespace py = pybind11;
 using gazebo_compat::Backend;
+using gazebo_compat::ContactInfo;
 using gazebo_compat::Host;
 using gazebo_compat::JointInfo;
 using gazebo_compat::ModelInfo;
+using gazebo_compat::SensorInfo;
 
 namespace
 {
@@ -66,6 +68,15 @@ class PyBackend : public Backend
   { PYBIND11_OVERRIDE_PURE(void, Backend, set_joint_motor, _model, _joint, _velocity, _maxForce); }
   void SetJointForce(const std::string &_model, const std::string &_joint, double _force) override
   { PYBIND11_OVERRIDE_PURE(void, Backend, set_joint_force, _model, _joint, _force); }
+  std::vector<SensorInfo> Sensors(const std::string &_model) override
+  { PYBIND11_OVERRIDE_PURE(std::vector<SensorInfo>, Backend, sensors, _model); }
+  std::vector<ContactInfo> SensorContacts(const std::string &_model,
+                                          const std::string &_sensor) override
+  { PYBIND11_OVERRIDE_PURE(std::vector<ContactInfo>, Backend, sensor_contacts, _model, _sensor); }
+  std::vector<double> SensorRanges(const std::string &_model, const std::string &_sensor) override
+  { PYBIND11_OVERRIDE_PURE(std::vector<double>, Backend, sensor_ranges, _model, _sensor); }
+  std::vector<double> SensorImu(const std::string &_model, const std::string &_sensor) override
+  { PYBIND11_OVERRIDE_PURE(std::vector<double>, Backend, sensor_imu, _model, _sensor); }
 };
 
 // the Python object behind the backend, kept alive while the host uses it
@@ -159,6 +170,26 @@ PYBIND11_MODULE(_gazebo_host, m)
       .def(py::init<>())
       .def_readwrite("links", &ModelInfo::links)
       .def_readwrite("joints", &ModelInfo::joints);
+  py::class_<SensorInfo>(m, "SensorInfo")
+      .def(py::init<>())
+      .def_readwrite("name", &SensorInfo::name)
+      .def_readwrite("type", &SensorInfo::type)
+      .def_readwrite("link", &SensorInfo::link)
+      .def_readwrite("update_rate", &SensorInfo::updateRate)
+      .def_readwrite("angle_min", &SensorInfo::angleMin)
+      .def_readwrite("angle_max", &SensorInfo::angleMax)
+      .def_readwrite("samples", &SensorInfo::samples)
+      .def_readwrite("range_min", &SensorInfo::rangeMin)
+      .def_readwrite("range_max", &SensorInfo::rangeMax);
+  py::class_<ContactInfo>(m, "ContactInfo")
+      .def(py::init<>())
+      .def_readwrite("collision1", &ContactInfo::collision1)
+      .def_readwrite("collision2", &ContactInfo::collision2)
+      .def_readwrite("positions", &ContactInfo::positions)
+      .def_readwrite("normals", &ContactInfo::normals)
+      .def_readwrite("depths", &ContactInfo::depths)
+      .def_readwrite("forces", &ContactInfo::forces)
+      .def_readwrite("torques", &ContactInfo::torques);
   py::class_<Backend, PyBackend, std::shared_ptr<Backend>>(m, "Backend").def(py::init<>());
 
   m.def("set_backend", [](py::object _backend) {

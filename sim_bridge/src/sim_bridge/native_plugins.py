@@ -42,6 +42,8 @@ from typing import TYPE_CHECKING, Callable, List, Optional, Sequence, Tuple
 import numpy as np
 import pybullet as pb
 
+from sim_bridge.native_sensors import NativeSensors
+
 if TYPE_CHECKING:  # the world imports this module
     from sim_bridge.world import World
 
@@ -85,11 +87,12 @@ class NativePlugins:
         self._host = None
         self._backend = None
         self.count = 0  # plugins loaded and not removed
+        self.sensors = NativeSensors(world)
 
     def _started(self):
         if self._host is None:
             host = _module()
-            self._backend = WorldBackend(host, self.world)
+            self._backend = WorldBackend(host, self.world, self.sensors)
             host.set_backend(self._backend)
             if _ros_node_name and host.init_ros(_ros_node_name):
                 atexit.register(host.shutdown_ros)
@@ -141,6 +144,7 @@ class NativePlugins:
         if self._host is not None:
             self.count -= len(self._host.plugin_names(model))
             self._host.remove_model(model)
+        self.sensors.forget(model)
 
     def reset(self) -> None:
         if self._host is not None:
@@ -152,6 +156,7 @@ class NativePlugins:
             self._host = None
             self._backend = None
             self.count = 0
+        self.sensors = NativeSensors(self.world)
 
 
 def _twist_kept(new: Sequence[float], old: Sequence[float]) -> np.ndarray:
@@ -159,7 +164,7 @@ def _twist_kept(new: Sequence[float], old: Sequence[float]) -> np.ndarray:
     return np.array([o if math.isnan(n) else n for n, o in zip(new, old)])
 
 
-def WorldBackend(host, world: "World"):
+def WorldBackend(host, world: "World", sensors: NativeSensors):
     """A gazebo_compat::Backend over ``world`` (the class derives from the host module's
     Backend, so it is made once the module is imported)."""
 
@@ -254,5 +259,34 @@ def WorldBackend(host, world: "World"):
 
         def set_joint_force(self, model_name: str, joint: str, force: float) -> None:
             world.set_step_joint_force(model_name, joint, force)
+
+        def sensors(self, model_name: str):
+            found = []
+            for reader in sensors.of(model_name).values():
+                info = host.SensorInfo()
+                info.name, info.type, info.link = reader.name, reader.type, reader.link
+                info.update_rate = reader.update_rate
+                if reader.type in ("ray", "gpu_ray"):
+                    laser = reader.reader
+                    info.angle_min, info.angle_max = laser.angle_min, laser.angle_max
+                    info.samples = len(laser.directions)
+                    info.range_min, info.range_max = laser.range_min, laser.range_max
+                found.append(info)
+            return found
+
+        def sensor_contacts(self, model_name: str, sensor: str):
+            found = []
+            for pair in sensors.contacts(model_name, sensor):
+                contact = host.ContactInfo()
+                (contact.collision1, contact.collision2, contact.positions, contact.normals,
+                 contact.depths, contact.forces, contact.torques) = pair
+                found.append(contact)
+            return found
+
+        def sensor_ranges(self, model_name: str, sensor: str) -> List[float]:
+            return sensors.ranges(model_name, sensor)
+
+        def sensor_imu(self, model_name: str, sensor: str) -> List[float]:
+            return sensors.imu(model_name, sensor)
 
     return _Backend()

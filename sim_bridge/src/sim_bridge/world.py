@@ -158,6 +158,8 @@ class Model:
     # model's frame
     link_in_model: Transform = IDENTITY
     com_in_model: Transform = IDENTITY
+    # robots: what their plugins were made with (Gazebo C++ plugins' sensors read through it)
+    context: Optional[PluginContext] = None
     # what set_joint_properties changed: joint → damping (N m s/rad), (lower, upper) stops
     joint_damping: Dict[str, float] = field(default_factory=dict)
     joint_stops: Dict[str, Tuple[float, float]] = field(default_factory=dict)
@@ -746,6 +748,7 @@ class World:
                                 self.model_of_body, model.structure,
                                 lambda body, name=name: self.applied_wrench(name, body),
                                 namespace_given=bool(namespace))
+        model.context = context
         try:
             model.plugins = create_plugins(context, tags)
         except Exception:

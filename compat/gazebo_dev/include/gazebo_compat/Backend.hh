@@ -26,6 +26,35 @@ namespace gazebo_compat
     double velocity = -1.0;
   };
 
+  // a <sensor> of a model, on one of Gazebo's links (after fixed-joint lumping)
+  struct SensorInfo
+  {
+    std::string name;
+    std::string type;  // contact, ray, gpu_ray, imu, ...
+    std::string link;
+    double updateRate = 0.0;
+    // ray sensors: the scan's angles (rad), samples and range (m)
+    double angleMin = 0.0;
+    double angleMax = 0.0;
+    int samples = 0;
+    double rangeMin = 0.0;
+    double rangeMax = 0.0;
+  };
+
+  // what one pair of collisions touches: scoped collision names (model::link::collision),
+  // and per contact point, flat [x y z ...] in world axes, the normal pointing at
+  // collision1, the depth, and the force and torque on collision1
+  struct ContactInfo
+  {
+    std::string collision1;
+    std::string collision2;
+    std::vector<double> positions;
+    std::vector<double> normals;
+    std::vector<double> depths;
+    std::vector<double> forces;
+    std::vector<double> torques;
+  };
+
   struct ModelInfo
   {
     std::vector<std::string> links;  // the canonical link first
@@ -64,6 +93,17 @@ namespace gazebo_compat
     // the joint's whole effort for the next step (replaces what was set in this step)
     public: virtual void SetJointForce(const std::string &_model, const std::string &_joint,
                                        double _force) = 0;
+    // the model's sensors, and what each reads now (after the last physics step)
+    public: virtual std::vector<SensorInfo> Sensors(const std::string &_model) = 0;
+    public: virtual std::vector<ContactInfo> SensorContacts(const std::string &_model,
+                                                            const std::string &_sensor) = 0;
+    // metres; +inf where a ray hits nothing within range
+    public: virtual std::vector<double> SensorRanges(const std::string &_model,
+                                                     const std::string &_sensor) = 0;
+    // [wx wy wz ax ay az qx qy qz qw]: the rate and specific force in the sensor's axes,
+    // its orientation in the world
+    public: virtual std::vector<double> SensorImu(const std::string &_model,
+                                                  const std::string &_sensor) = 0;
   };
 }
 #endif

@@ -5,13 +5,17 @@ the simulator's roscpp node beside the rospy node /gazebo, stamped in simulated 
 drives 0.5 m and turns 90 degrees on its command topic, in ground truth
 (/gazebo/get_model_state), by SetParam("vel") and by SetVelocity alike. A base spawned in
 spawn_model's default namespace has its topics at the root, and one whose plugin names a
-joint it does not have spawns without the plugin, the error named."""
+joint it does not have spawns without the plugin, the error named. The plugin's sensors
+(plugin-less <sensor>s it finds through SensorManager): the gyro's heading and rate are the
+odometry's, the cliff ray reads the floor's distance, the bumper's contacts press the
+centre bumper when the base meets a wall."""
 import math
 import os
 import subprocess
 import sys
 import unittest
 
+import numpy as np
 import rosgraph
 import rospkg
 import rospy
@@ -20,6 +24,10 @@ from gazebo_msgs.srv import SpawnModel
 from geometry_msgs.msg import Pose, Twist
 from nav_msgs.msg import Odometry
 from rosgraph_msgs.msg import Log
+from std_msgs.msg import Float64, UInt8
+from tf.transformations import quaternion_from_euler, quaternion_matrix
+
+from sim_bridge.poses import yaw_from_quaternion
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sim_checks import Simulator, angle_difference, wait_until  # noqa: E402
@@ -42,6 +50,19 @@ TOLERANCE = 0.05  # of the distance or angle: the wheels' slip
 # s of simulated time: the odometry plugin publishes at 50 Hz, each stamped with the time
 # roscpp has received from /clock at that step
 ODOMETRY_PERIOD = 0.02
+# the cliff sensor's height above the floor (the URDF's cliff_height), and what its first
+# ray reads, 2.5 degrees off the vertical, at the sensor's 1 mm resolution
+CLIFF_HEIGHT = 0.04
+CLIFF_X = 0.15  # and how far ahead of the base's centre (the URDF's cliff_x)
+CLIFF_ANGLE = 0.0436
+RANGE_RESOLUTION = 0.001
+HEADING_TOLERANCE = 0.01  # rad: the gyro's heading against the true one, at rest
+# the bumper test's wall: a static box whose near face is WALL_GAP ahead of the base's centre
+WALL_GAP = 0.5
+WALL_SIZE = (0.2, 1.0, 0.3)
+BODY_RADIUS = 0.175  # the base's round body (the URDF's body_radius)
+CONTACT_TOLERANCE = 0.02  # m: where the base stands when the bumper reports
+BUMPER_CENTRE = 2  # kobuki_msgs/SensorState's bit
 
 
 class CppPluginDrive(unittest.TestCase):
@@ -52,6 +73,12 @@ class CppPluginDrive(unittest.TestCase):
         for base in BASES:
             cls.sim.wait_for_model(base)
         cls.odometry = {}
+        cls.bumpers = []
+        cls.cliff = []
+        rospy.Subscriber(f"/{BASES[0]}/mobile_base/sensors/bumper", UInt8,
+                         lambda message: cls.bumpers.append(message.data))
+        rospy.Subscriber(f"/{BASES[0]}/mobile_base/sensors/cliff_range", Float64,
+                         lambda message: cls.cliff.append(message.data))
         cls.commands = {base: rospy.Publisher(f"/{base}/mobile_base/commands/velocity", Twist,
                                               queue_size=1) for base in BASES}
         for base in BASES:
@@ -84,6 +111,7 @@ class CppPluginDrive(unittest.TestCase):
         self.sim.wait_sim_time(start + RUN)
         self.sim.pause()
         elapsed = self.sim.sim_time() - start
+        self.moving = dict(self.odometry)  # the last odometry while at the command
         after = {base: self.sim.truth(base) for base in BASES}
         type(self).command = Twist()
         self.sim.unpause()
@@ -128,13 +156,22 @@ class CppPluginDrive(unittest.TestCase):
                                    msg=base)
             self.assertLess(abs(angle_difference(after[2], before[2])), TOLERANCE, msg=base)
 
-    def test_4_a_quarter_turn(self):
+    def test_4_a_quarter_turn_and_the_gyro_follows_it(self):
+        at_rest = {base: (self.sim.truth(base)[2], _yaw(self.odometry[base])) for base in BASES}
         elapsed, runs = self._run(0.0, TURN_RATE)
         for base, (before, after) in runs.items():
             turned = angle_difference(after[2], before[2])
             rospy.loginfo("%s: %.4f rad in %.3f s", base, turned, elapsed)
             self.assertAlmostEqual(turned, TURN_RATE * elapsed,
                                    delta=TURN_RATE * elapsed * TOLERANCE, msg=base)
+            # the odometry's turn rate is the gyro's (ImuSensor::AngularVelocity)
+            self.assertAlmostEqual(self.moving[base].twist.twist.angular.z, TURN_RATE,
+                                   delta=TURN_RATE * TOLERANCE, msg=base)
+            # and its heading the gyro's (ImuSensor::Orientation), both at rest again
+            true_turn = angle_difference(self.sim.truth(base)[2], at_rest[base][0])
+            gyro_turn = angle_difference(_yaw(self.odometry[base]), at_rest[base][1])
+            rospy.loginfo("%s: turned %.4f rad, the gyro says %.4f", base, true_turn, gyro_turn)
+            self.assertAlmostEqual(gyro_turn, true_turn, delta=HEADING_TOLERANCE, msg=base)
 
     def test_5_a_command_that_is_not_repeated_stops_after_the_timeout(self):
         self.timer.shutdown()
@@ -180,6 +217,64 @@ class CppPluginDrive(unittest.TestCase):
                       "missing_joint", warning)
         publishers = dict(rosgraph.Master("/check").getSystemState()[0])
         self.assertNotIn("/broken_base/odom", publishers)
+
+    def test_7_the_cliff_ray_reads_the_floor(self):
+        """The first ray's length to the floor, from the base's true pose (it leans a little
+        on a caster: pybullet's cylinders, the wheels, stand on a 1 mm margin)."""
+        self.sim.pause()
+        self.cliff.clear()
+        pose = self.sim.pose(BASES[0])
+        self.sim.unpause()
+        wait_until(lambda: self.cliff, "the cliff range")
+        p, q = pose.position, pose.orientation
+        base = quaternion_matrix((q.x, q.y, q.z, q.w))[:3, :3]
+        height = p.z + (base @ np.array([CLIFF_X, 0.0, CLIFF_HEIGHT]))[2]
+        # the sensor pitched down a right angle: its ray at angle a runs along
+        # (cos a, sin a, 0) of its own axes, which are the base's turned about y
+        down = base @ quaternion_matrix(quaternion_from_euler(0.0, math.pi / 2, 0.0))[:3, :3]
+        ray = down @ np.array([math.cos(-CLIFF_ANGLE), math.sin(-CLIFF_ANGLE), 0.0])
+        expected = height / -ray[2]
+        rospy.loginfo("cliff range %.4f m; the floor %.4f m along the ray", self.cliff[0],
+                      expected)
+        self.assertAlmostEqual(self.cliff[0], expected, delta=RANGE_RESOLUTION)
+
+    def test_8_the_bumper_presses_at_a_wall(self):
+        base = BASES[0]
+        x, y, yaw = self.sim.truth(base)
+        centre = WALL_GAP + WALL_SIZE[0] / 2
+        wall = ("<sdf version='1.6'><model name='wall'><static>true</static><link name='link'>"
+                "<collision name='collision'><geometry><box><size>{} {} {}</size></box>"
+                "</geometry></collision></link></model></sdf>").format(*WALL_SIZE)
+        pose = Pose()
+        pose.position.x = x + centre * math.cos(yaw)
+        pose.position.y = y + centre * math.sin(yaw)
+        pose.position.z = WALL_SIZE[2] / 2
+        pose.orientation.z, pose.orientation.w = math.sin(yaw / 2), math.cos(yaw / 2)
+        spawn = rospy.ServiceProxy("/gazebo/spawn_sdf_model", SpawnModel)
+        self.assertTrue(spawn("wall", wall, "", pose, "world").success)
+        self.bumpers.clear()
+        wait_until(lambda: self.bumpers, "the bumpers")
+        self.assertEqual(self.bumpers[-1], 0)  # nothing touched yet
+        forward = Twist()
+        forward.linear.x = SPEED
+        type(self).command = forward
+        type(self).timer = rospy.Timer(rospy.Duration(COMMAND_PERIOD), self._repeat_command)
+        wait_until(lambda: self.bumpers and self.bumpers[-1] != 0, "a bumper pressed")
+        self.sim.pause()
+        pressed = self.bumpers[-1]
+        stands = self.sim.truth(base)
+        type(self).command = Twist()
+        self.sim.unpause()
+        self.assertEqual(pressed, BUMPER_CENTRE)
+        ahead = (stands[0] - x) * math.cos(yaw) + (stands[1] - y) * math.sin(yaw)
+        rospy.loginfo("%s: bumper %d with its centre %.4f m from the wall", base, pressed,
+                      WALL_GAP - ahead)
+        self.assertAlmostEqual(WALL_GAP - ahead, BODY_RADIUS, delta=CONTACT_TOLERANCE)
+
+
+def _yaw(odometry):
+    q = odometry.pose.pose.orientation
+    return yaw_from_quaternion((q.x, q.y, q.z, q.w))
 
 
 if __name__ == "__main__":

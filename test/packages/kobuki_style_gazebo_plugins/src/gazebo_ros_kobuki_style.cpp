@@ -9,6 +9,12 @@
 //   set_velocity  Joint::SetVelocity each WorldUpdateEnd, for the step to come (Kobuki's way
 //                 since Gazebo 7).
 // A command older than <velocity_command_timeout> (s of simulated time) stops the wheels.
+// Its sensors, found in Load by their plain names as Kobuki's finds them: a contact sensor
+// (<bumper_name>) whose contacts, by their direction from the base, press the left, centre
+// or right bumper; an IMU (<imu_name>) whose yaw and rate are the odometry's heading and
+// turn rate; a downward ray (<cliff_sensor_name>), the floor's distance under the front. The
+// bumpers (Kobuki's SensorState bits: right 1, centre 2, left 4) and the cliff range are
+// published with the odometry on <base_prefix>/sensors/bumper and .../cliff_range.
 #include <cmath>
 #include <mutex>
 #include <string>
@@ -16,13 +22,24 @@
 #include <gazebo/common/common.hh>
 #include <gazebo/gazebo.hh>
 #include <gazebo/physics/physics.hh>
+#include <gazebo/sensors/sensors.hh>
 #include <gazebo_plugins/gazebo_ros_utils.h>
 #include <geometry_msgs/Twist.h>
 #include <nav_msgs/Odometry.h>
 #include <ros/ros.h>
+#include <std_msgs/Float64.h>
+#include <std_msgs/UInt8.h>
 
 namespace gazebo
 {
+// kobuki_msgs/SensorState's bumper bits
+const uint8_t BUMPER_RIGHT = 1;
+const uint8_t BUMPER_CENTRE = 2;
+const uint8_t BUMPER_LEFT = 4;
+// a contact this far (rad) either side of straight ahead presses the centre bumper, up to a
+// right angle the side's
+const double CENTRE_HALF_WIDTH = M_PI / 6;
+
 class GazeboRosKobukiStyle : public ModelPlugin
 {
   public: void Load(physics::ModelPtr _model, sdf::ElementPtr _sdf) override
@@ -55,10 +72,16 @@ class GazeboRosKobukiStyle : public ModelPlugin
     std::string command;
     this->ros->getParameter<std::string>(command, "wheel_command", "set_param");
     this->bySetParam = command != "set_velocity";
+    if (!this->FindSensors())
+      return;
     this->odomFrame = this->ros->resolveTF("odom");
     this->baseFrame = this->ros->resolveTF("base_footprint");
 
     this->odomPublisher = this->ros->node()->advertise<nav_msgs::Odometry>("odom", 1);
+    this->bumperPublisher =
+        this->ros->node()->advertise<std_msgs::UInt8>(prefix + "/sensors/bumper", 1);
+    this->cliffPublisher =
+        this->ros->node()->advertise<std_msgs::Float64>(prefix + "/sensors/cliff_range", 1);
     this->commandSubscriber = this->ros->node()->subscribe(
         prefix + "/commands/velocity", 10, &GazeboRosKobukiStyle::OnCommand, this);
     ROS_INFO_STREAM(this->ros->info() << ": wheels by "
@@ -84,7 +107,8 @@ class GazeboRosKobukiStyle : public ModelPlugin
   {
     std::lock_guard<std::mutex> lock(this->mutex);
     this->linear = this->angular = 0.0;
-    this->x = this->y = this->yaw = 0.0;
+    this->x = this->y = 0.0;
+    this->yaw = this->imu->Orientation().Yaw();
     this->lastLeft = this->left->Position(0);
     this->lastRight = this->right->Position(0);
     this->lastUpdate = this->model->GetWorld()->SimTime();
@@ -93,6 +117,61 @@ class GazeboRosKobukiStyle : public ModelPlugin
       this->left->SetParam("fmax", 0, this->torque);
       this->right->SetParam("fmax", 0, this->torque);
     }
+  }
+
+  // the sensors the URDF names, on the base's link (all lumped into base_footprint), by
+  // their scoped names as Kobuki finds its gyro (an unscoped name is ambiguous once two
+  // robots share the world, in Gazebo as here); the plugin does not run without them
+  private: bool FindSensors()
+  {
+    std::string bumper, imu, cliff;
+    this->ros->getParameter<std::string>(bumper, "bumper_name", "bumpers");
+    this->ros->getParameter<std::string>(imu, "imu_name", "imu");
+    this->ros->getParameter<std::string>(cliff, "cliff_sensor_name", "cliff_sensor_front");
+    const std::string link = this->model->GetWorld()->Name() + "::" + this->model->GetName() +
+                             "::base_footprint::";
+    this->bumper = std::dynamic_pointer_cast<sensors::ContactSensor>(
+        sensors::SensorManager::Instance()->GetSensor(link + bumper));
+    this->imu = std::dynamic_pointer_cast<sensors::ImuSensor>(sensors::get_sensor(link + imu));
+    this->cliff = std::dynamic_pointer_cast<sensors::RaySensor>(
+        sensors::SensorManager::Instance()->GetSensor(link + cliff));
+    if (!this->bumper || !this->imu || !this->cliff)
+    {
+      ROS_ERROR_STREAM(this->ros->info() << ": a sensor is missing (bumper " << bumper
+                       << (this->bumper ? "" : " not found") << ", imu " << imu
+                       << (this->imu ? "" : " not found") << ", cliff " << cliff
+                       << (this->cliff ? "" : " not found") << "); the plugin does not run");
+      return false;
+    }
+    this->bumper->SetActive(true);
+    this->imu->SetActive(true);
+    this->cliff->SetActive(true);
+    return true;
+  }
+
+  // the bumpers pressed: the contacts on the base, by their direction in the base's frame
+  private: uint8_t Bumpers()
+  {
+    const msgs::Contacts contacts = this->bumper->Contacts();
+    const double yaw = this->model->WorldPose().Rot().Yaw();
+    uint8_t pressed = 0;
+    for (int i = 0; i < contacts.contact_size(); ++i)
+    {
+      const msgs::Contact &contact = contacts.contact(i);
+      // the normal points at collision1, the base: the obstacle is the other way
+      if (contact.collision1().find(this->bumper->ParentName()) != 0 ||
+          contact.normal_size() == 0)
+        continue;
+      const double towards = std::atan2(-contact.normal(0).y(), -contact.normal(0).x());
+      const double relative = std::remainder(towards - yaw, 2 * M_PI);
+      if (std::fabs(relative) <= CENTRE_HALF_WIDTH)
+        pressed |= BUMPER_CENTRE;
+      else if (relative > 0 && relative <= M_PI / 2)
+        pressed |= BUMPER_LEFT;
+      else if (relative < 0 && relative >= -M_PI / 2)
+        pressed |= BUMPER_RIGHT;
+    }
+    return pressed;
   }
 
   // ROS's thread (the simulator's spinner)
@@ -157,10 +236,12 @@ class GazeboRosKobukiStyle : public ModelPlugin
     this->lastLeft = leftNow;
     this->lastRight = rightNow;
     const double run = (leftRun + rightRun) / 2.0;
-    const double turn = (rightRun - leftRun) / this->separation;
+    // the heading from the gyro (relative to the base's at load), as Kobuki's
+    const double heading = this->imu->Orientation().Yaw();
+    const double turn = std::remainder(heading - this->yaw, 2 * M_PI);
     this->x += run * std::cos(this->yaw + turn / 2.0);
     this->y += run * std::sin(this->yaw + turn / 2.0);
-    this->yaw += turn;
+    this->yaw = heading;
 
     nav_msgs::Odometry odometry;
     odometry.header.stamp = ros::Time::now();
@@ -173,9 +254,16 @@ class GazeboRosKobukiStyle : public ModelPlugin
     if (_elapsed > 0.0)
     {
       odometry.twist.twist.linear.x = run / _elapsed;
-      odometry.twist.twist.angular.z = turn / _elapsed;
     }
+    odometry.twist.twist.angular.z = this->imu->AngularVelocity().Z();
     this->odomPublisher.publish(odometry);
+
+    std_msgs::UInt8 bumpers;
+    bumpers.data = this->Bumpers();
+    this->bumperPublisher.publish(bumpers);
+    std_msgs::Float64 cliffRange;
+    cliffRange.data = this->cliff->Range(0);
+    this->cliffPublisher.publish(cliffRange);
   }
 
   private: physics::ModelPtr model;
@@ -184,7 +272,10 @@ class GazeboRosKobukiStyle : public ModelPlugin
   private: double separation = 0.0, radius = 0.0, torque = 0.0, timeout = 0.0, period = 0.0;
   private: bool bySetParam = true;
   private: std::string odomFrame, baseFrame;
-  private: ros::Publisher odomPublisher;
+  private: ros::Publisher odomPublisher, bumperPublisher, cliffPublisher;
+  private: sensors::ContactSensorPtr bumper;
+  private: sensors::ImuSensorPtr imu;
+  private: sensors::RaySensorPtr cliff;
   private: ros::Subscriber commandSubscriber;
   private: event::ConnectionPtr beginConnection, endConnection;
   private: std::mutex mutex;

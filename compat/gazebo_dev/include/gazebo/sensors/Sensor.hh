@@ -1,8 +1,7 @@
-// gazebo::sensors::Sensor: what every sensor answers, by name (gazebo_plugins'
-// gazebo_ros_utils.h includes this header and reads a sensor's ScopedName). sim_bridge makes
-// no C++ sensor yet (its sensors are emulated in Python): the class is here so that code
-// written against it compiles and links; SensorManager and the typed sensors (ContactSensor,
-// RaySensor, ImuSensor) are a later landing's.
+// gazebo::sensors::Sensor: what every sensor answers. sim_bridge makes one for each
+// <sensor> of a model (its Python world measures; see gazebo_compat/Backend.hh) when the
+// model's plugins are loaded, so that they find them in Load, as in Gazebo; the typed ones
+// are ContactSensor, RaySensor and ImuSensor, the others plain Sensors.
 #ifndef GAZEBO_COMPAT_SENSORS_SENSOR_HH
 #define GAZEBO_COMPAT_SENSORS_SENSOR_HH
 #include <string>
@@ -16,23 +15,32 @@ namespace gazebo
   {
     class GZ_SENSORS_VISIBLE Sensor
     {
-      // _parent is the scoped name of the link it is on (model::link)
-      public: Sensor(const std::string &_worldName, const std::string &_parent,
-                     const std::string &_name, const std::string &_type);
+      // on the link _link of the model _model (Gazebo's names)
+      public: Sensor(const std::string &_worldName, const std::string &_model,
+                     const std::string &_link, const std::string &_name,
+                     const std::string &_type, double _updateRate);
       public: virtual ~Sensor();
       public: std::string Name() const;
       // world::model::link::sensor
       public: std::string ScopedName() const;
+      // the link's scoped name, model::link
       public: std::string ParentName() const;
       public: std::string WorldName() const;
       public: std::string Type() const;
+      // Hz of simulated time; 0: every step
+      public: double UpdateRate() const;
       public: virtual void SetActive(const bool _value);
       public: virtual bool IsActive() const;
 
-      private: std::string worldName;
-      private: std::string parentName;
-      private: std::string name;
-      private: std::string type;
+      // for sim_bridge's host
+      public: std::string ModelName() const;
+
+      protected: std::string worldName;
+      protected: std::string modelName;
+      protected: std::string linkName;
+      protected: std::string name;
+      protected: std::string type;
+      protected: double updateRate = 0.0;
       private: bool active = false;
     };
   }

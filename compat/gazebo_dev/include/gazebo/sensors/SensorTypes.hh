@@ -1,7 +1,5 @@
-// gazebo::sensors' names and pointer types (std::shared_ptr, as Gazebo 11's). Of the sensor
-// classes only the base, Sensor, is provided (Sensor.hh): sim_bridge emulates sensors in
-// Python, and no C++ view onto them exists yet (ContactSensor, RaySensor and ImuSensor are a
-// later landing's).
+// gazebo::sensors' names and pointer types (std::shared_ptr, as Gazebo 11's); sensors.hh
+// says which classes are provided.
 #ifndef GAZEBO_COMPAT_SENSORS_SENSORTYPES_HH
 #define GAZEBO_COMPAT_SENSORS_SENSORTYPES_HH
 #include <memory>

@@ -1,8 +1,12 @@
-// What sim_bridge provides of gazebo::sensors: the names and pointer types
-// (SensorTypes.hh) and the Sensor base class (Sensor.hh); the typed sensors and
-// SensorManager are not provided yet, and code calling them does not compile.
+// What sim_bridge provides of gazebo::sensors: Sensor, ContactSensor, RaySensor, ImuSensor,
+// SensorManager and get_sensor (the other sensor types are named, as plain Sensors).
 #ifndef GAZEBO_COMPAT_SENSORS_SENSORS_HH
 #define GAZEBO_COMPAT_SENSORS_SENSORS_HH
 #include "gazebo/sensors/SensorTypes.hh"
 #include "gazebo/sensors/Sensor.hh"
+#include "gazebo/sensors/ContactSensor.hh"
+#include "gazebo/sensors/ImuSensor.hh"
+#include "gazebo/sensors/RaySensor.hh"
+#include "gazebo/sensors/SensorManager.hh"
+#include "gazebo/sensors/SensorsIface.hh"
 #endif
