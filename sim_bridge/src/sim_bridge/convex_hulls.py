@@ -12,8 +12,7 @@ turned into those planes once, when its body spawns.
   ``o`` or ``g``, of the vertices its faces use, as pybullet's OBJ reader groups them; a
   binary STL: one), scaled, each as outward unit normals n and offsets d (inside: n.x <= d)
   about the centre of its bounding sphere; cached per file and scale;
-- :func:`hull_planes`: the planes of a point cloud's hull: an incremental hull over the
-  points (numpy; no qhull in the environment: trimesh's hull needs scipy), coplanar
+- :func:`hull_planes`: the planes of a point cloud's hull: qhull's (scipy), coplanar
   triangles merged into one plane.
 
 A hull with no volume (the points on a plane or a line) gives no planes: the caller keeps
@@ -29,10 +28,6 @@ import numpy as np
 
 from sim_bridge.mesh_files import stl_vertices
 
-# Points this far (relative to the cloud's extent) off a face's plane count as on it: the
-# float rounding of the OBJ's 9 digits, far below what a laser resolves (1e-9 of a 1 m
-# mesh: a nanometre).
-RELATIVE_TOLERANCE = 1e-9
 # Two triangles whose unit normals differ by less than this (rad) are one face: a cube's 12
 # triangles become its 6 planes, a cone's frustum's 96 its 50 (the OBJ's 9 digits turn
 # the normals of a flat quad's two triangles up to about 1e-8 apart). The plane is put
@@ -55,92 +50,20 @@ class Hull:
 
 def hull_planes(points: np.ndarray) -> Optional[np.ndarray]:
     """The planes (K, 4: unit outward normal, offset) of the convex hull of ``points``
-    (N, 3), coplanar faces merged; None when the hull has no volume."""
+    (N, 3), coplanar faces merged; None when the hull has no volume. The hull is qhull's
+    (scipy.spatial.ConvexHull), whose facets' ``equations`` are the outward unit normals
+    and the offsets' negatives."""
+    from scipy.spatial import ConvexHull, QhullError
     points = np.unique(np.asarray(points, dtype=float).reshape(-1, 3), axis=0)
     if len(points) < 4:
         return None
-    extent = float(np.max(points.max(axis=0) - points.min(axis=0)))
-    tolerance = RELATIVE_TOLERANCE * max(extent, 1.0)
-    simplex = _initial_simplex(points, tolerance)
-    if simplex is None:
+    try:
+        hull = ConvexHull(points)
+    except QhullError:  # flat or on a line: no volume
         return None
-    faces = _hull_faces(points, simplex, tolerance)
-    corners = points[np.unique(np.array(faces))]
-    normals = _merged(np.array([_plane(points, face)[0] for face in faces]))
+    corners = points[hull.vertices]
+    normals = _merged(hull.equations[:, :3])
     return np.column_stack([normals, _support(corners, normals)])
-
-
-def _initial_simplex(points: np.ndarray, tolerance: float) -> Optional[List[int]]:
-    """Four points spanning a volume (extremes of the cloud), or None when it is flat."""
-    first = int(np.argmin(points[:, 0]))
-    distances = np.linalg.norm(points - points[first], axis=1)
-    second = int(np.argmax(distances))
-    if distances[second] <= tolerance:
-        return None
-    axis = (points[second] - points[first]) / distances[second]
-    relative = points - points[first]
-    off_line = np.linalg.norm(relative - np.outer(relative @ axis, axis), axis=1)
-    third = int(np.argmax(off_line))
-    if off_line[third] <= tolerance:
-        return None
-    normal = np.cross(points[second] - points[first], points[third] - points[first])
-    normal /= np.linalg.norm(normal)
-    heights = relative @ normal
-    fourth = int(np.argmax(np.abs(heights)))
-    if abs(heights[fourth]) <= tolerance:
-        return None
-    return [first, second, third, fourth]
-
-
-def _plane(points: np.ndarray, face: Tuple[int, int, int]) -> Tuple[np.ndarray, float]:
-    a, b, c = (points[i] for i in face)
-    normal = np.cross(b - a, c - a)
-    normal /= np.linalg.norm(normal)
-    return normal, float(normal @ a)
-
-
-def _hull_faces(points: np.ndarray, simplex: List[int],
-                tolerance: float) -> List[Tuple[int, int, int]]:
-    """The hull's triangles, each wound outward: the tetrahedron, then every point outside
-    the current hull replaces the faces it sees by a fan from the horizon to itself. Points
-    are taken farthest from the centre first, so that most of the rest fall inside early."""
-    inside_point = points[simplex].mean(axis=0)
-    faces: List[Tuple[int, int, int]] = []
-    for a, b, c in ((0, 1, 2), (0, 1, 3), (0, 2, 3), (1, 2, 3)):
-        face = (simplex[a], simplex[b], simplex[c])
-        normal, offset = _plane(points, face)
-        if normal @ inside_point > offset:  # wound inward: turn it
-            face = (face[0], face[2], face[1])
-        faces.append(face)
-    normals = np.array([_plane(points, f)[0] for f in faces])
-    offsets = np.array([_plane(points, f)[1] for f in faces])
-    alive = np.ones(len(faces), dtype=bool)
-    order = np.argsort(-np.linalg.norm(points - inside_point, axis=1), kind="stable")
-    order = order[~np.isin(order, simplex)]
-    for start in range(0, len(order), BATCH):
-        batch = order[start:start + BATCH]
-        # the batch's points inside the hull so far, in one product, are passed over
-        live = np.nonzero(alive)[0]
-        outside = ((points[batch] @ normals[live].T - offsets[live]) > tolerance).any(axis=1)
-        for index in batch[outside]:
-            point = points[index]
-            live = np.nonzero(alive)[0]
-            visible = live[normals[live] @ point - offsets[live] > tolerance]
-            if not len(visible):
-                continue
-            edges = set()
-            for face_index in visible:
-                a, b, c = faces[face_index]
-                edges.update(((a, b), (b, c), (c, a)))
-            horizon = [edge for edge in edges if (edge[1], edge[0]) not in edges]
-            alive[visible] = False
-            new = [(a, b, int(index)) for a, b in horizon]
-            planes = [_plane(points, face) for face in new]
-            faces.extend(new)
-            normals = np.vstack([normals, [n for n, _ in planes]])
-            offsets = np.concatenate([offsets, [d for _, d in planes]])
-            alive = np.concatenate([alive, np.ones(len(new), dtype=bool)])
-    return [face for face, kept in zip(faces, alive) if kept]
 
 
 def _merged(normals: np.ndarray) -> np.ndarray:
