@@ -30,7 +30,12 @@ roscpp is initialised once per process, when the first plugin is loaded in a pro
 asked for ROS (:func:`use_ros`, which sim_bridge's node calls), under the node name
 :data:`ROS_NODE_NAME` (sim_bridge's rospy node is already ``/gazebo``; a second ``/gazebo``
 would make the master shut the first down), with an AsyncSpinner on the global queue, as
-gazebo_ros's API plugin runs it. Plugins check ``ros::isInitialized()`` as they do in Gazebo.
+gazebo_ros's API plugin runs it. Plugins check ``ros::isInitialized()`` as they do in Gazebo;
+under ``use_sim_time`` roscpp follows ``/clock`` as any node does.
+
+A model's ``<sensor>``s become the C++ plugins' sensors (SensorManager, ContactSensor,
+RaySensor, ImuSensor) when its plugins load, before their ``Load``; they are measured in
+:mod:`sim_bridge.native_sensors`.
 """
 from __future__ import annotations
 
