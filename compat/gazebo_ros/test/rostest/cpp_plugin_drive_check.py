@@ -20,7 +20,8 @@ import rosgraph
 import rospkg
 import rospy
 import rostest
-from gazebo_msgs.srv import SpawnModel
+from gazebo_msgs.srv import DeleteModel, SpawnModel
+from std_srvs.srv import Empty
 from geometry_msgs.msg import Pose, Twist
 from nav_msgs.msg import Odometry
 from rosgraph_msgs.msg import Log
@@ -265,11 +266,28 @@ class CppPluginDrive(unittest.TestCase):
         stands = self.sim.truth(base)
         type(self).command = Twist()
         self.sim.unpause()
+        rospy.ServiceProxy("/gazebo/delete_model", DeleteModel)("wall")
         self.assertEqual(pressed, BUMPER_CENTRE)
         ahead = (stands[0] - x) * math.cos(yaw) + (stands[1] - y) * math.sin(yaw)
         rospy.loginfo("%s: bumper %d with its centre %.4f m from the wall", base, pressed,
                       WALL_GAP - ahead)
         self.assertAlmostEqual(WALL_GAP - ahead, BODY_RADIUS, delta=CONTACT_TOLERANCE)
+
+    def test_9_after_a_world_reset_it_drives_again(self):
+        """reset_world turns the joints' motors off (as ODE's Joint::Reset); the plugin's
+        Reset sets fmax again, as gazebo_ros_diff_drive's does, and both bases drive."""
+        rospy.ServiceProxy("/gazebo/reset_world", Empty)()
+        self.odometry.clear()
+        wait_until(lambda: all(base in self.odometry for base in BASES), "odometry after it")
+        for base in BASES:  # its odometry starts over
+            position = self.odometry[base].pose.pose.position
+            self.assertLess(math.hypot(position.x, position.y), 0.01, msg=base)
+        elapsed, runs = self._run(SPEED, 0.0)
+        for base, (before, after) in runs.items():
+            travelled = math.hypot(after[0] - before[0], after[1] - before[1])
+            rospy.loginfo("%s after the reset: %.4f m in %.3f s", base, travelled, elapsed)
+            self.assertAlmostEqual(travelled, SPEED * elapsed, delta=SPEED * elapsed * TOLERANCE,
+                                   msg=base)
 
 
 def _yaw(odometry):
