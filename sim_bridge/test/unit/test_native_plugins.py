@@ -4,6 +4,8 @@ from GAZEBO_PLUGIN_PATH, run in lockstep with the world; checked in pybullet's g
 
 The fixtures (test/data/gazebo_plugins) are built once per run with plain CMake against the
 devel space (about 6 s on two cores)."""
+import ctypes
+import math
 import os
 import subprocess
 import xml.etree.ElementTree as ET
@@ -158,3 +160,113 @@ def test_wheel_motors_by_set_param_drive_the_robot(plugin_world, diff_bot_xml, l
     travelled = math.hypot(end[0] - start[0], end[1] - start[1])
     assert travelled == pytest.approx(linear * DRIVE_SECONDS, abs=DRIVE_TOLERANCE * 0.5)
     assert yaw == pytest.approx(angular * DRIVE_SECONDS, abs=DRIVE_TOLERANCE * math.pi / 2)
+
+
+# A robot with plugin-less sensors, as Kobuki's URDF has them, and the probe plugin that
+# reads them through SensorManager (test/data/gazebo_plugins/sensor_probe.cc); the ray looks
+# down from ahead of the body (a ray from inside the body would meet the body)
+BODY_MASS = 2.0
+BODY_HALF_HEIGHT = 0.05
+PROBE_YAW = 0.5  # the robot's heading at spawn (rad): the IMU's reference
+PROBE_TURN = 0.3  # then turned by this much
+GRAVITY = 9.8
+SENSOR_TOLERANCE = 0.01  # of a force or an acceleration: the contacts' give
+TINY_MASS = "<inertial><mass value='0.001'/><inertia ixx='1e-7' ixy='0' ixz='0' iyy='1e-7' " \
+            "iyz='0' izz='1e-7'/></inertial>"
+
+
+def _probe_bot(name, sensor_names):
+    inertia = BODY_MASS * (0.3 ** 2 + 0.1 ** 2) / 12
+    return f"""<robot name="{name}">
+  <link name="body">
+    <collision><geometry><box size="0.4 0.3 0.1"/></geometry></collision>
+    <inertial><mass value="{BODY_MASS}"/>
+      <inertia ixx="{inertia}" ixy="0" ixz="0" iyy="{inertia}" iyz="0" izz="{inertia}"/></inertial>
+  </link>
+  <link name="ray_mount">{TINY_MASS}</link>
+  <joint name="ray_mount_joint" type="fixed"><parent link="body"/><child link="ray_mount"/>
+    <origin xyz="0.25 0 0" rpy="0 {math.pi / 2} 0"/></joint>
+  <link name="imu_link">{TINY_MASS}</link>
+  <joint name="imu_joint" type="fixed"><parent link="body"/><child link="imu_link"/></joint>
+  <gazebo reference="body"><sensor type="contact" name="touch">
+    <contact><collision>body_collision</collision></contact></sensor></gazebo>
+  <gazebo reference="ray_mount"><sensor type="ray" name="down"><ray>
+    <scan><horizontal><samples>1</samples><min_angle>0</min_angle><max_angle>0</max_angle>
+    </horizontal></scan><range><min>0.01</min><max>2.0</max></range></ray></sensor></gazebo>
+  <gazebo reference="imu_link"><sensor type="imu" name="imu"/></gazebo>
+  <gazebo><plugin name="probe" filename="libsensor_probe.so">
+    <sensors>{sensor_names}</sensors></plugin></gazebo>
+</robot>"""
+
+
+def _probe_report(plugin_dir):
+    """{sensor's scoped name: its line's words} from the probe's last update."""
+    library = ctypes.CDLL(os.path.join(plugin_dir, "libsensor_probe.so"))
+    library.sensor_probe_report.restype = ctypes.c_char_p
+    lines = library.sensor_probe_report().decode().splitlines()
+    return {line.split()[0]: line.split()[1:] for line in lines}
+
+
+def _field(words, name):
+    return float(words[words.index(name) + 1])
+
+
+def _ground(world):
+    from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec
+    world.add_sdf_model(ModelSpec("ground", True, links=[
+        LinkSpec("link", collisions=[ShapeSpec("plane")])]))
+
+
+def test_a_robots_sensors_read_through_the_sensor_manager(plugin_world, plugin_dir):
+    """Plugin-less <sensor>s found by their plain names: the contact sensor feels the
+    ground under the body (the normal up, at the body; the weight), the downward ray reads
+    the height of its mount, the IMU at rest reads +g up and a heading relative to the one
+    it had at load."""
+    import pybullet as pb
+    world, bus = plugin_world
+    _ground(world)
+    spawn_orientation = pb.getQuaternionFromEuler((0, 0, PROBE_YAW))
+    world.spawn_urdf("probe_bot", _probe_bot("probe_bot", "touch down imu"),
+                     (0, 0, BODY_HALF_HEIGHT), spawn_orientation)
+    assert bus.warnings == []
+    for _ in range(round(SPIN_UP_SECONDS / world.step_size)):
+        world.step()
+    report = _probe_report(plugin_dir)
+    touch = report["default::probe_bot::body::touch"]
+    assert touch[:2] == ["probe_bot::body", "contact"]
+    assert touch[touch.index("pair") + 1] == "probe_bot::body::body_collision"
+    assert _field(touch, "points") >= 1
+    assert _field(touch, "normal_z") == pytest.approx(1.0, abs=1e-3)
+    assert _field(touch, "force_z") == pytest.approx(BODY_MASS * GRAVITY, rel=SENSOR_TOLERANCE)
+    down = report["default::probe_bot::body::down"]  # lumped into body, as Gazebo names it
+    assert down[:2] == ["probe_bot::body", "ray"]
+    assert _field(down, "count") == 1
+    assert (_field(down, "min"), _field(down, "max")) == (0.01, 2.0)
+    mount_height = world.pose("probe_bot")[0][2]
+    assert _field(down, "range0") == pytest.approx(mount_height, abs=1e-3)
+    imu = report["default::probe_bot::body::imu"]
+    assert _field(imu, "accel_z") == pytest.approx(GRAVITY, rel=SENSOR_TOLERANCE)
+    assert _field(imu, "rate_z") == pytest.approx(0.0, abs=1e-3)
+    assert _field(imu, "yaw") == pytest.approx(0.0, abs=1e-3)
+    position = world.pose("probe_bot")[0]
+    world.set_state("probe_bot", position,
+                    pb.getQuaternionFromEuler((0, 0, PROBE_YAW + PROBE_TURN)))
+    world.step()
+    assert _field(_probe_report(plugin_dir)["default::probe_bot::body::imu"], "yaw") == \
+        pytest.approx(PROBE_TURN, abs=1e-3)
+
+
+def test_a_plain_sensor_name_two_robots_share_finds_none(plugin_world):
+    """As Gazebo's SensorManager: the second robot's probe asks for 'touch', which both
+    robots now have: none is found (gzerr), the plugin throws, the robot spawns; asked by
+    its scoped name, the third's finds its own."""
+    world, bus = plugin_world
+    _ground(world)
+    world.spawn_urdf("first", _probe_bot("first", "touch"), (0, 0, BODY_HALF_HEIGHT))
+    world.spawn_urdf("second", _probe_bot("second", "touch"), (1, 0, BODY_HALF_HEIGHT))
+    world.spawn_urdf("third", _probe_bot("third", "default::third::body::touch"),
+                     (2, 0, BODY_HALF_HEIGHT))
+    [warning] = bus.warnings
+    assert warning.startswith("model 'second': plugin 'probe' (libsensor_probe.so) not loaded")
+    assert "SensorProbe: no sensor named touch" in warning
+    assert set(world.models) >= {"first", "second", "third"}

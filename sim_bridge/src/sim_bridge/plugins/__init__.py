@@ -10,7 +10,8 @@ cannot run as written (see ``_build``).
 A ``<sensor>`` without a plugin publishes nothing to ROS, in Gazebo as here. It warns,
 unless a model plugin reads its link (``<bodyName>``): TurtleBot3 marks its ``imu_link``
 with a plugin-less ``<sensor type="imu">`` and reads it with ``libgazebo_ros_imu.so``,
-which is as intended and gets a debug note at most.
+which is as intended and gets a debug note at most; so does a sensor of a model with a
+Gazebo C++ plugin, which may read it (Kobuki's reads its bumpers, cliff rays and gyro).
 """
 from __future__ import annotations
 
@@ -143,10 +144,16 @@ def _create_plugins(context: PluginContext, tags: GazeboTags, plugins: List[Plug
             continue              # is in it (sim_bridge.native_plugins)
         _build(context, spec, f"plugin '{spec.name}' ({spec.filename})",
                lambda tracked, cls=plugin_class, spec=spec: cls(tracked, spec), plugins)
+    # a Gazebo C++ model plugin may read any sensor through SensorManager (Kobuki's reads
+    # its plugin-less bumpers, cliff rays and gyro: sim_bridge.native_sensors)
+    native = any(spec.filename not in MODEL_PLUGINS for spec in tags.plugins)
     for sensor in tags.sensors:
         if not sensor.plugins and sensor.link in read_links:
             context.bus.debug(f"model '{context.model_name}': sensor '{sensor.name}' has no "
                               f"plugin; its link '{sensor.link}' is read by a model plugin")
+        elif not sensor.plugins and native:
+            context.bus.debug(f"model '{context.model_name}': sensor '{sensor.name}' has no "
+                              "plugin; the model's C++ plugins may read it")
         elif not sensor.plugins:
             context.bus.warn(f"model '{context.model_name}': sensor '{sensor.name}' has no "
                              "plugin, so nothing publishes it; ignored")
