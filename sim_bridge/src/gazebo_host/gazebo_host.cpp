@@ -106,10 +106,15 @@ sdf::ElementPtr Element(const py::handle &_node, sdf::ElementPtr _parent)
   return element;
 }
 
+// the <model> and <world> elements above the plugins' elements, by model ("" the world's):
+// an element holds its parent weakly, and plugins read _sdf->GetParent() (Kobuki's its
+// model's name) long after they are loaded
+std::map<std::string, std::vector<sdf::ElementPtr>> keptParents;
+
 // a <plugin> inside its <model name=...> (plugins read _sdf->GetParent()'s name), or
-// inside <world name=...>
+// inside <world name=...>; the parent kept under _key
 sdf::ElementPtr PluginElement(const std::string &_parentTag, const std::string &_parentName,
-                              const py::handle &_plugin)
+                              const py::handle &_plugin, const std::string &_key)
 {
   sdf::ElementPtr parent(new sdf::Element);
   parent->SetName(_parentTag);
@@ -117,6 +122,7 @@ sdf::ElementPtr PluginElement(const std::string &_parentTag, const std::string &
   parent->GetAttribute("name")->SetFromString(_parentName);
   sdf::ElementPtr plugin = Element(_plugin, parent);
   parent->InsertElement(plugin);
+  keptParents[_key].push_back(parent);
   return plugin;
 }
 
@@ -198,21 +204,26 @@ PYBIND11_MODULE(_gazebo_host, m)
   });
   m.def("load_model_plugin", [](const std::string &_model, const std::string &_filename,
                                 const std::string &_name, py::handle _plugin) {
-    sdf::ElementPtr element = PluginElement("model", _model, _plugin);
+    sdf::ElementPtr element = PluginElement("model", _model, _plugin, _model);
     py::gil_scoped_release release;
     return Host::Instance().LoadModelPlugin(_model, _filename, _name, element);
   });
   m.def("load_world_plugin", [](const std::string &_world, const std::string &_filename,
                                 const std::string &_name, py::handle _plugin) {
-    sdf::ElementPtr element = PluginElement("world", _world, _plugin);
+    sdf::ElementPtr element = PluginElement("world", _world, _plugin, "");
     py::gil_scoped_release release;
     return Host::Instance().LoadWorldPlugin(_filename, _name, element);
   });
   m.def("plugin_names", [](const std::string &_model) {
     return Host::Instance().PluginNames(_model);
   });
-  m.def("remove_model", [](const std::string &_model) { Host::Instance().RemoveModel(_model); },
-        py::call_guard<py::gil_scoped_release>());
+  m.def("remove_model", [](const std::string &_model) {
+    {
+      py::gil_scoped_release release;
+      Host::Instance().RemoveModel(_model);
+    }
+    keptParents.erase(_model);
+  });
   m.def("set_sim_time", [](int64_t _ns) { Host::Instance().SetSimTime(_ns); });
   m.def("world_update_begin", [](int64_t _ns) { Host::Instance().WorldUpdateBegin(_ns); },
         py::call_guard<py::gil_scoped_release>());
@@ -224,6 +235,7 @@ PYBIND11_MODULE(_gazebo_host, m)
       py::gil_scoped_release release;
       Host::Instance().Close();
     }
+    keptParents.clear();
     keptBackend = py::object();
   });
   m.def("plugin_path", []() { return Host::PluginPath(); });

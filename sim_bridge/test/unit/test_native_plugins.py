@@ -232,6 +232,8 @@ def test_a_robots_sensors_read_through_the_sensor_manager(plugin_world, plugin_d
     for _ in range(round(SPIN_UP_SECONDS / world.step_size)):
         world.step()
     report = _probe_report(plugin_dir)
+    # the <plugin>'s parent is its <model>, named, after Load too (Kobuki reads it so)
+    assert report["model:"] == ["probe_bot"]
     touch = report["default::probe_bot::body::touch"]
     assert touch[:2] == ["probe_bot::body", "contact"]
     assert touch[touch.index("pair") + 1] == "probe_bot::body::body_collision"

@@ -2,7 +2,8 @@
 // and reports what it read for test_native_plugins.py: sensor_probe_report() (C linkage;
 // the test opens this library with ctypes and gets the instance sim_bridge loaded). The
 // <sensors> it names (space-separated, plain or scoped) are looked up in Load through
-// SensorManager, as Kobuki's plugin looks up its own; a missing one throws.
+// SensorManager, as Kobuki's plugin looks up its own; a missing one throws. Its first line
+// names the model as Kobuki's plugin reads it, from the <plugin> element's parent.
 #include <cstdio>
 #include <mutex>
 #include <sstream>
@@ -33,6 +34,7 @@ namespace gazebo
   {
     public: void Load(physics::ModelPtr, sdf::ElementPtr _sdf)
     {
+      this->sdf = _sdf;
       std::istringstream names(_sdf->Get<std::string>("sensors"));
       std::string name;
       while (names >> name)
@@ -52,6 +54,8 @@ namespace gazebo
     {
       std::ostringstream out;
       out.precision(6);
+      // read at each update: the element's parent outlives Load
+      out << "model: " << this->sdf->GetParent()->Get<std::string>("name") << "\n";
       for (const auto &sensor : this->found)
       {
         out << sensor->ScopedName() << " " << sensor->ParentName() << " " << sensor->Type();
@@ -88,6 +92,7 @@ namespace gazebo
       report = out.str();
     }
 
+    private: sdf::ElementPtr sdf;
     private: std::vector<sensors::SensorPtr> found;
     private: event::ConnectionPtr connection;
   };
