@@ -170,19 +170,22 @@ gazebo::physics::ModelPtr Host::Model(const std::string &_name)
     gazebo::sensors::SensorPtr made;
     if (sensor.type == "contact")
       made.reset(new gazebo::sensors::ContactSensor(world, _name, sensor.link, sensor.name,
-                                                    sensor.type, sensor.updateRate));
+                                                    sensor.type, sensor.updateRate,
+                                                    sensor.alwaysOn));
     else if (sensor.type == "ray" || sensor.type == "gpu_ray")
       made.reset(new gazebo::sensors::RaySensor(world, _name, sensor.link, sensor.name,
                                                 sensor.type, sensor.updateRate,
-                                                sensor.angleMin, sensor.angleMax,
+                                                sensor.alwaysOn, sensor.angleMin,
+                                                sensor.angleMax,
                                                 sensor.samples, sensor.rangeMin,
                                                 sensor.rangeMax));
     else if (sensor.type == "imu")
       made.reset(new gazebo::sensors::ImuSensor(world, _name, sensor.link, sensor.name,
-                                                sensor.type, sensor.updateRate));
+                                                sensor.type, sensor.updateRate,
+                                                sensor.alwaysOn));
     else
       made.reset(new gazebo::sensors::Sensor(world, _name, sensor.link, sensor.name,
-                                             sensor.type, sensor.updateRate));
+                                             sensor.type, sensor.updateRate, sensor.alwaysOn));
     gazebo::sensors::SensorManager::Instance()->AddSensor(made);
   }
   return model;
@@ -236,6 +239,50 @@ std::string Host::LoadModelPlugin(const std::string &_model, const std::string &
   return "";
 }
 
+std::string Host::LoadSensorPlugin(const std::string &_model, const std::string &_sensor,
+                                   const std::string &_filename, const std::string &_name,
+                                   sdf::ElementPtr _sdf)
+{
+  gazebo::SensorPlugin::TPtr plugin;
+  std::string fullname, error;
+  void *symbol = OpenPluginLibrary(_filename, fullname, error);
+  if (!symbol)
+    return "failed to load plugin " + _filename + ": " + error;
+  gazebo::sensors::SensorPtr sensor;
+  try
+  {
+    this->Model(_model);  // its sensors made
+    for (const auto &candidate : gazebo::sensors::SensorManager::Instance()->GetSensors())
+      if (candidate->ModelName() == _model && candidate->Name() == _sensor)
+        sensor = candidate;
+    typedef gazebo::SensorPlugin *(*Register)();
+    plugin.reset(reinterpret_cast<Register>(symbol)());
+  }
+  catch (...)
+  {
+    return "its constructor threw: " + Describe(std::current_exception());
+  }
+  if (!sensor)
+    return "its sensor '" + _sensor + "' is not one sim_bridge makes";
+  if (!plugin)
+    return "RegisterPlugin returned no plugin";
+  if (plugin->GetType() != gazebo::SENSOR_PLUGIN)
+    return "it is not a sensor plugin (GZ_REGISTER_SENSOR_PLUGIN)";
+  try
+  {
+    plugin->Load(sensor, _sdf);
+    plugin->Init();
+  }
+  catch (...)
+  {
+    return "exception in the Load function of plugin with name[" + _name + "] and filename[" +
+           _filename + "]: " + Describe(std::current_exception()) + "; this plugin will not run";
+  }
+  std::lock_guard<std::recursive_mutex> lock(this->mutex);
+  this->sensorPlugins.emplace_back(_model, plugin);
+  return "";
+}
+
 std::string Host::LoadWorldPlugin(const std::string &_filename, const std::string &_name,
                                   sdf::ElementPtr _sdf)
 {
@@ -275,8 +322,19 @@ std::string Host::LoadWorldPlugin(const std::string &_filename, const std::strin
 void Host::RemoveModel(const std::string &_name)
 {
   std::vector<gazebo::ModelPlugin::TPtr> dropped;
+  std::vector<gazebo::SensorPlugin::TPtr> droppedSensorPlugins;
   {
     std::lock_guard<std::recursive_mutex> lock(this->mutex);
+    for (auto it = this->sensorPlugins.begin(); it != this->sensorPlugins.end();)
+    {
+      if (it->first == _name)
+      {
+        droppedSensorPlugins.push_back(it->second);
+        it = this->sensorPlugins.erase(it);
+      }
+      else
+        ++it;
+    }
     for (auto it = this->modelPlugins.begin(); it != this->modelPlugins.end();)
     {
       if (it->first == _name)
@@ -291,6 +349,7 @@ void Host::RemoveModel(const std::string &_name)
   }
   // destroyed outside the lock: a plugin's destructor may join its own threads
   dropped.clear();
+  droppedSensorPlugins.clear();
   gazebo::sensors::SensorManager::Instance()->RemoveSensors(_name);
 }
 
@@ -299,6 +358,9 @@ std::vector<std::string> Host::PluginNames(const std::string &_model) const
   std::lock_guard<std::recursive_mutex> lock(this->mutex);
   std::vector<std::string> names;
   for (const auto &entry : this->modelPlugins)
+    if (entry.first == _model)
+      names.push_back(entry.second->GetHandle());
+  for (const auto &entry : this->sensorPlugins)
     if (entry.first == _model)
       names.push_back(entry.second->GetHandle());
   return names;
@@ -346,6 +408,10 @@ void Host::WorldUpdateEnd()
   for (const auto &model : this->KnownModels())
     model->ClearForces();
   gazebo::event::Events::worldUpdateEnd();
+  // then the sensors that are due measure and tell their subscribers
+  const int64_t now = this->SimTimeNs();
+  for (const auto &sensor : gazebo::sensors::SensorManager::Instance()->GetSensors())
+    sensor->StepEnded(now);
 }
 
 void Host::Reset()
@@ -354,15 +420,20 @@ void Host::Reset()
     model->Reset();
   std::vector<gazebo::WorldPlugin::TPtr> worldPlugins;
   std::vector<gazebo::ModelPlugin::TPtr> modelPlugins;
+  std::vector<gazebo::SensorPlugin::TPtr> sensorPlugins;
   {
     std::lock_guard<std::recursive_mutex> lock(this->mutex);
     worldPlugins = this->worldPlugins;
     for (const auto &entry : this->modelPlugins)
       modelPlugins.push_back(entry.second);
+    for (const auto &entry : this->sensorPlugins)
+      sensorPlugins.push_back(entry.second);
   }
   for (const auto &plugin : worldPlugins)
     plugin->Reset();
   for (const auto &plugin : modelPlugins)
+    plugin->Reset();
+  for (const auto &plugin : sensorPlugins)
     plugin->Reset();
   gazebo::event::Events::worldReset();
   gazebo::event::Events::timeReset();
@@ -373,14 +444,17 @@ void Host::Close()
   gazebo::event::Events::stop();
   std::vector<gazebo::WorldPlugin::TPtr> worldPlugins;
   std::vector<std::pair<std::string, gazebo::ModelPlugin::TPtr>> modelPlugins;
+  std::vector<std::pair<std::string, gazebo::SensorPlugin::TPtr>> sensorPlugins;
   {
     std::lock_guard<std::recursive_mutex> lock(this->mutex);
     worldPlugins.swap(this->worldPlugins);
     modelPlugins.swap(this->modelPlugins);
+    sensorPlugins.swap(this->sensorPlugins);
     this->models.clear();
     this->world.reset();
     this->iterations = 0;
   }
+  sensorPlugins.clear();
   modelPlugins.clear();
   worldPlugins.clear();
   gazebo::sensors::SensorManager::Instance()->Clear();

@@ -34,9 +34,9 @@ const size_t kImuValues = 10;
 // --- Sensor --------------------------------------------------------------------------------
 Sensor::Sensor(const std::string &_worldName, const std::string &_model,
                const std::string &_link, const std::string &_name, const std::string &_type,
-               double _updateRate)
+               double _updateRate, bool _alwaysOn)
   : worldName(_worldName), modelName(_model), linkName(_link), name(_name), type(_type),
-    updateRate(_updateRate)
+    updateRate(_updateRate), active(_alwaysOn)
 {
 }
 
@@ -56,6 +56,27 @@ double Sensor::UpdateRate() const { return this->updateRate; }
 void Sensor::SetActive(const bool _value) { this->active = _value; }
 bool Sensor::IsActive() const { return this->active; }
 std::string Sensor::ModelName() const { return this->modelName; }
+
+event::ConnectionPtr Sensor::ConnectUpdated(std::function<void()> _subscriber)
+{
+  return this->updated.Connect(_subscriber);
+}
+
+void Sensor::Update(const bool _force)
+{
+  if (_force || this->active)
+    this->updated();
+}
+
+void Sensor::StepEnded(int64_t _simTimeNs)
+{
+  if (!this->active || _simTimeNs < this->nextUpdateNs)
+    return;
+  // the next update one period on (Gazebo's sensors keep to their rate)
+  const int64_t period = this->updateRate > 0 ? static_cast<int64_t>(1e9 / this->updateRate) : 0;
+  this->nextUpdateNs = _simTimeNs + period;
+  this->updated();
+}
 
 // --- ContactSensor -------------------------------------------------------------------------
 msgs::Contacts ContactSensor::Contacts() const
@@ -107,9 +128,11 @@ msgs::Contacts ContactSensor::Contacts() const
 // --- RaySensor -----------------------------------------------------------------------------
 RaySensor::RaySensor(const std::string &_worldName, const std::string &_model,
                      const std::string &_link, const std::string &_name,
-                     const std::string &_type, double _updateRate, double _angleMin,
-                     double _angleMax, int _samples, double _rangeMin, double _rangeMax)
-  : Sensor(_worldName, _model, _link, _name, _type, _updateRate), angleMin(_angleMin),
+                     const std::string &_type, double _updateRate, bool _alwaysOn,
+                     double _angleMin, double _angleMax, int _samples, double _rangeMin,
+                     double _rangeMax)
+  : Sensor(_worldName, _model, _link, _name, _type, _updateRate, _alwaysOn),
+    angleMin(_angleMin),
     angleMax(_angleMax), samples(_samples), rangeMin(_rangeMin), rangeMax(_rangeMax)
 {
 }
@@ -149,8 +172,8 @@ void RaySensor::Ranges(std::vector<double> &_ranges) const
 // --- ImuSensor -----------------------------------------------------------------------------
 ImuSensor::ImuSensor(const std::string &_worldName, const std::string &_model,
                      const std::string &_link, const std::string &_name,
-                     const std::string &_type, double _updateRate)
-  : Sensor(_worldName, _model, _link, _name, _type, _updateRate)
+                     const std::string &_type, double _updateRate, bool _alwaysOn)
+  : Sensor(_worldName, _model, _link, _name, _type, _updateRate, _alwaysOn)
 {
   this->SetReferencePose();
 }

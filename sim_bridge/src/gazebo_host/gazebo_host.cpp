@@ -182,6 +182,7 @@ PYBIND11_MODULE(_gazebo_host, m)
       .def_readwrite("type", &SensorInfo::type)
       .def_readwrite("link", &SensorInfo::link)
       .def_readwrite("update_rate", &SensorInfo::updateRate)
+      .def_readwrite("always_on", &SensorInfo::alwaysOn)
       .def_readwrite("angle_min", &SensorInfo::angleMin)
       .def_readwrite("angle_max", &SensorInfo::angleMax)
       .def_readwrite("samples", &SensorInfo::samples)
@@ -207,6 +208,13 @@ PYBIND11_MODULE(_gazebo_host, m)
     sdf::ElementPtr element = PluginElement("model", _model, _plugin, _model);
     py::gil_scoped_release release;
     return Host::Instance().LoadModelPlugin(_model, _filename, _name, element);
+  });
+  m.def("load_sensor_plugin", [](const std::string &_model, const std::string &_sensor,
+                                 const std::string &_filename, const std::string &_name,
+                                 py::handle _plugin) {
+    sdf::ElementPtr element = PluginElement("sensor", _sensor, _plugin, _model);
+    py::gil_scoped_release release;
+    return Host::Instance().LoadSensorPlugin(_model, _sensor, _filename, _name, element);
   });
   m.def("load_world_plugin", [](const std::string &_world, const std::string &_filename,
                                 const std::string &_name, py::handle _plugin) {

@@ -129,6 +129,15 @@ class NativePlugins:
                                                 element_tree(element, namespace)),
             "the model is spawned without it")
 
+    def load_sensor_plugin(self, model: str, sensor: str, element: ET.Element,
+                           namespace: str = "") -> bool:
+        name, filename = element.get("name", ""), element.get("filename", "")
+        return self._load(
+            f"model '{model}': sensor '{sensor}': plugin '{name}' ({filename})",
+            lambda host: host.load_sensor_plugin(model, sensor, filename, name,
+                                                 element_tree(element, namespace)),
+            "the sensor runs without it")
+
     def load_world_plugin(self, world_name: str, element: ET.Element) -> bool:
         name, filename = element.get("name", ""), element.get("filename", "")
         return self._load(
@@ -270,7 +279,7 @@ def WorldBackend(host, world: "World", sensors: NativeSensors):
             for reader in sensors.of(model_name).values():
                 info = host.SensorInfo()
                 info.name, info.type, info.link = reader.name, reader.type, reader.link
-                info.update_rate = reader.update_rate
+                info.update_rate, info.always_on = reader.update_rate, reader.always_on
                 if reader.type in ("ray", "gpu_ray"):
                     laser = reader.reader
                     info.angle_min, info.angle_max = laser.angle_min, laser.angle_max

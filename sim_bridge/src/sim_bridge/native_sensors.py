@@ -74,6 +74,7 @@ class SensorReader:
     type: str
     link: str  # Gazebo's link (after lumping)
     update_rate: float
+    always_on: bool
     reader: object  # the emulated plugin that measures
     measured_ns: int = -1
     value: object = None
@@ -105,7 +106,9 @@ class NativeSensors:
             kind = READERS.get(sensor.type)
             link = model.structure.body_of.get(sensor.link, sensor.link)
             if kind is None:  # named, and reads nothing
-                readers[sensor.name] = SensorReader(sensor.name, sensor.type, link, 0.0, None)
+                readers[sensor.name] = SensorReader(sensor.name, sensor.type, link,
+                                                    _update_rate(sensor), _always_on(sensor),
+                                                    None)
                 continue
             # the IMU plugin's frame is its messages' only; the laser's topic never opened
             spec = PluginSpec(sensor.name, "", {"frameName": sensor.link}, sensor.element)
@@ -116,7 +119,7 @@ class NativeSensors:
                                     f"read by Gazebo C++ plugins: {error}")
                 continue
             readers[sensor.name] = SensorReader(sensor.name, sensor.type, link,
-                                                _update_rate(sensor), reader)
+                                                _update_rate(sensor), _always_on(sensor), reader)
         return readers
 
     def _measured(self, model_name: str, sensor: str, measure):
@@ -156,6 +159,11 @@ class NativeSensors:
 
 def _flat(vectors) -> List[float]:
     return [value for v in vectors for value in (v.x, v.y, v.z)]
+
+
+def _always_on(sensor) -> bool:
+    """sdformat's bool: true or 1 (false when absent)."""
+    return (sensor.element.findtext("always_on") or "").strip().lower() in ("true", "1")
 
 
 def _update_rate(sensor) -> float:

@@ -36,7 +36,7 @@ from sim_bridge.external_forces import (BodyWrench, ExternalForces, JointEffort,
 from sim_bridge.gazebo_tags import GazeboTags, read_gazebo_tags
 from sim_bridge.model_structure import Structure, sdf_structure, urdf_structure
 from sim_bridge.native_plugins import NativePlugins
-from sim_bridge.plugins import MODEL_PLUGINS, create_plugins
+from sim_bridge.plugins import MODEL_PLUGINS, SENSOR_PLUGINS, create_plugins
 from sim_bridge.plugins.base import Bus, Plugin, PluginContext
 from sim_bridge.poses import (compose6, normalized, pose6_matrix, pose6_to_position_quaternion,
                               quaternion_from_rpy, quaternion_matrix)
@@ -778,6 +778,11 @@ class World:
         self.models[name] = model
         self._scene_changed()
         self._load_native_plugins(name, [spec.element for spec in tags.plugins], namespace)
+        # and its sensors' plugins that are not emulated (Gazebo's sensor plugins)
+        for sensor in tags.sensors:
+            for spec in sensor.plugins:
+                if spec.filename not in SENSOR_PLUGINS:
+                    self.native.load_sensor_plugin(name, sensor.name, spec.element, namespace)
         return model
 
     def _lifted_out_of_scenery(self, robot: RobotBody, position: Sequence[float],
@@ -811,7 +816,7 @@ class World:
     def model_of_body(self, body: int) -> Optional[str]:
         """The name of the model whose pybullet body ``body`` is, or None."""
         for name, model in self.models.items():
-            if model.body == body:
+            if model.body == body or body in model.static_bodies:
                 return name
         return None
 

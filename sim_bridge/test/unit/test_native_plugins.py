@@ -272,3 +272,41 @@ def test_a_plain_sensor_name_two_robots_share_finds_none(plugin_world):
     assert warning.startswith("model 'second': plugin 'probe' (libsensor_probe.so) not loaded")
     assert "SensorProbe: no sensor named touch" in warning
     assert set(world.models) >= {"first", "second", "third"}
+
+
+CONTACT_RATE = 100.0  # Hz: the contact sensor's <update_rate>
+CONTACT_SECONDS = 1.0
+
+
+def _box_with_contact_plugin():
+    inertia = BODY_MASS * (0.3 ** 2 + 0.1 ** 2) / 12
+    return f"""<robot name="tutorial_box">
+  <link name="body">
+    <collision><geometry><box size="0.4 0.3 0.1"/></geometry></collision>
+    <inertial><mass value="{BODY_MASS}"/>
+      <inertia ixx="{inertia}" ixy="0" ixz="0" iyy="{inertia}" iyz="0" izz="{inertia}"/></inertial>
+  </link>
+  <gazebo reference="body"><sensor type="contact" name="my_contact">
+    <contact><collision>body_collision</collision></contact>
+    <update_rate>{CONTACT_RATE}</update_rate>
+    <plugin name="contact" filename="libcontact_plugin.so"/></sensor></gazebo>
+</robot>"""
+
+
+def test_a_sensor_plugin_hears_its_contact_sensor_at_its_rate(plugin_world, plugin_dir):
+    """A sensor plugin (GZ_REGISTER_SENSOR_PLUGIN) inside a <sensor> is loaded with the
+    sensor; once activated, the sensor updates at its <update_rate> in simulated time and
+    calls the plugin, which reads the box's contacts with the ground."""
+    world, bus = plugin_world
+    _ground(world)
+    world.spawn_urdf("tutorial_box", _box_with_contact_plugin(), (0, 0, BODY_HALF_HEIGHT))
+    assert bus.warnings == []
+    for _ in range(round(CONTACT_SECONDS / world.step_size)):
+        world.step()
+    library = ctypes.CDLL(os.path.join(plugin_dir, "libcontact_plugin.so"))
+    library.contact_plugin_report.restype = ctypes.c_char_p
+    words = library.contact_plugin_report().decode().split()
+    assert int(words[1]) == pytest.approx(CONTACT_RATE * CONTACT_SECONDS, abs=1)
+    assert int(words[3]) >= 1
+    assert words[5] == "tutorial_box::body::body_collision"
+    assert words[6].startswith("ground::")

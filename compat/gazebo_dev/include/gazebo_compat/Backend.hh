@@ -33,6 +33,7 @@ namespace gazebo_compat
     std::string type;  // contact, ray, gpu_ray, imu, ...
     std::string link;
     double updateRate = 0.0;
+    bool alwaysOn = false;
     // ray sensors: the scan's angles (rad), samples and range (m)
     double angleMin = 0.0;
     double angleMax = 0.0;
@@ -93,7 +94,8 @@ namespace gazebo_compat
     // the joint's whole effort for the next step (replaces what was set in this step)
     public: virtual void SetJointForce(const std::string &_model, const std::string &_joint,
                                        double _force) = 0;
-    // the model's sensors, and what each reads now (after the last physics step)
+    // the model's sensors (its robot's <sensor>s), and what each reads now (after the last
+    // physics step)
     public: virtual std::vector<SensorInfo> Sensors(const std::string &_model) = 0;
     public: virtual std::vector<ContactInfo> SensorContacts(const std::string &_model,
                                                             const std::string &_sensor) = 0;

@@ -36,6 +36,10 @@ namespace gazebo_compat
     // "" when loaded, else why not
     public: std::string LoadModelPlugin(const std::string &_model, const std::string &_filename,
                                         const std::string &_name, sdf::ElementPtr _sdf);
+    // a plugin of the model's sensor (a <plugin> inside its <sensor>)
+    public: std::string LoadSensorPlugin(const std::string &_model, const std::string &_sensor,
+                                         const std::string &_filename,
+                                         const std::string &_name, sdf::ElementPtr _sdf);
     public: std::string LoadWorldPlugin(const std::string &_filename, const std::string &_name,
                                         sdf::ElementPtr _sdf);
     // the model's plugins destroyed, the model forgotten (it was deleted)
@@ -61,6 +65,7 @@ namespace gazebo_compat
     private: std::map<std::string, gazebo::physics::ModelPtr> models;
     private: std::vector<std::pair<std::string, gazebo::ModelPlugin::TPtr>> modelPlugins;
     private: std::vector<gazebo::WorldPlugin::TPtr> worldPlugins;
+    private: std::vector<std::pair<std::string, gazebo::SensorPlugin::TPtr>> sensorPlugins;
     private: int64_t simTimeNs = 0;
     private: uint32_t iterations = 0;
   };

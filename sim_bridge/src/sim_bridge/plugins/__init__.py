@@ -1,11 +1,12 @@
 """Gazebo plugins emulated by sim_bridge, found by the ``filename`` a URDF gives.
 
 ``MODEL_PLUGINS`` maps a model plugin's filename to its class; ``SENSOR_PLUGINS`` maps a
-sensor plugin's filename to its class and the sensor types it serves. Another model plugin
-is loaded as Gazebo's C++ plugin from the plugin path (:mod:`sim_bridge.native_plugins`,
-which warns, naming it, when it cannot be, and the robot runs without it); another sensor
-plugin gets one warning that names it, and the robot runs without it; so does a plugin that
-cannot run as written (see ``_build``).
+sensor plugin's filename to its class and the sensor types it serves. Another model or
+sensor plugin is loaded as Gazebo's C++ plugin from the plugin path
+(:mod:`sim_bridge.native_plugins`, which warns, naming it, when it cannot be, and the robot
+runs without it); an emulated sensor plugin on a sensor of a type it does not serve gets one
+warning that names it, and the robot runs without it; so does a plugin that cannot run as
+written (see ``_build``).
 
 A ``<sensor>`` without a plugin publishes nothing to ROS, in Gazebo as here. It warns,
 unless a model plugin reads its link (``<bodyName>``): TurtleBot3 marks its ``imu_link``
@@ -159,7 +160,9 @@ def _create_plugins(context: PluginContext, tags: GazeboTags, plugins: List[Plug
                              "plugin, so nothing publishes it; ignored")
         for spec in sensor.plugins:
             entry = SENSOR_PLUGINS.get(spec.filename)
-            if entry is None or sensor.type not in entry[1]:
+            if entry is None:  # a Gazebo C++ sensor plugin: the world loads it once the
+                continue       # model is in it (sim_bridge.native_plugins)
+            if sensor.type not in entry[1]:
                 context.bus.warn(f"model '{context.model_name}': sensor '{sensor.name}' of type "
                                  f"'{sensor.type}' with plugin {spec.filename} is not emulated "
                                  "by sim_bridge; ignored")

@@ -20,7 +20,7 @@ namespace gazebo
     {
       public: ImuSensor(const std::string &_worldName, const std::string &_model,
                         const std::string &_link, const std::string &_name,
-                        const std::string &_type, double _updateRate);
+                        const std::string &_type, double _updateRate, bool _alwaysOn);
       public: ignition::math::Vector3d AngularVelocity(const bool _noiseFree = false) const;
       public: ignition::math::Vector3d LinearAcceleration(const bool _noiseFree = false) const;
       public: ignition::math::Quaterniond Orientation() const;

@@ -18,8 +18,9 @@ namespace gazebo
     {
       public: RaySensor(const std::string &_worldName, const std::string &_model,
                         const std::string &_link, const std::string &_name,
-                        const std::string &_type, double _updateRate, double _angleMin,
-                        double _angleMax, int _samples, double _rangeMin, double _rangeMax);
+                        const std::string &_type, double _updateRate, bool _alwaysOn,
+                        double _angleMin, double _angleMax, int _samples, double _rangeMin,
+                        double _rangeMax);
       public: ignition::math::Angle AngleMin() const;
       public: ignition::math::Angle AngleMax() const;
       public: double AngleResolution() const;
