@@ -150,6 +150,7 @@ class NativeSensors:
     def imu(self, model_name: str, sensor: str) -> List[float]:
         """[wx wy wz ax ay az qx qy qz qw]."""
         def measure(imu: ImuSensor, now: int):
+            # the emulated plugin's own update (its publishing side is not used)
             imu._measure(now)
             _, orientation, specific_force, body_rate = imu._measured
             return [*map(float, body_rate), *map(float, specific_force),
