@@ -11,9 +11,14 @@ fixed joint therefore has, in Gazebo, a link ``base_footprint`` and no link ``ba
 named ``world`` is never lumped (it fixes the robot to the world).
 
 pybullet keeps every URDF link; this module says which of them Gazebo's interface shows,
-so that what runs on sim_bridge runs in Gazebo. Collision names are sdformat's:
-``<link>_collision``, a lumped one ``<link>_fixed_joint_lump__<its own link>_collision``,
-with ``_1``, ``_2``... after the first of a link. Links follow sdformat's order (the root
+so that what runs on sim_bridge runs in Gazebo. Collision names are sdformat 9's (Gazebo
+11's; gazebosim/sdformat sdf9 9ee2d4f src/parser_urdf.cc:2880-2901, :3168-3179): the URDF
+collision's ``name``, or its link's name when it has none, then ``_collision``, then ``_1``,
+``_2``... after the first of the Gazebo link; a name that does not begin with the Gazebo
+link's own name is prefixed ``<link>_fixed_joint_lump__``: a lumped link's unnamed
+collision is ``<link>_fixed_joint_lump__<its own link>_collision``, and so is a named one
+anywhere (Kobuki's ``base`` on ``base_link`` lumped into ``base_footprint``:
+``base_footprint_fixed_joint_lump__base_collision``). Links follow sdformat's order (the root
 first, then depth first, children by joint name), joints the order of their child links.
 
 An SDF model here is a list of links without joints (sim_bridge's SDF reader keeps no
@@ -45,6 +50,8 @@ class Structure:
     body_of: Mapping[str, str] = field(default_factory=dict)
     # a lumped link → the fixed joint that lumped it
     lumped_by: Mapping[str, str] = field(default_factory=dict)
+    # a collision's name (as in geoms) → the description's link it is written in
+    geom_links: Mapping[str, str] = field(default_factory=dict)
 
     @property
     def canonical(self) -> str:
@@ -67,11 +74,13 @@ def is_lumped(model: RobotModel, joint: Joint) -> bool:
     return not any(_true(properties.get(tag, "")) for tag in KEEP_TAGS)
 
 
-def _geom_names(body: str, sources: List[str]) -> List[str]:
+def _geom_names(body: str, sources: List[Tuple[str, str]]) -> List[str]:
+    """sdformat's names of the collisions of ``body``, from (link, collision name) in its
+    order (see the module's doc)."""
     names = []
-    for index, link in enumerate(sources):
-        name = f"{body}_collision" if link == body else f"{body}{LUMP_INFIX}{link}_collision"
-        names.append(name if index == 0 else f"{name}_{index}")
+    for index, (link, own) in enumerate(sources):
+        name = f"{own or link}_collision" + (f"_{index}" if index else "")
+        names.append(name if name.startswith(body) else f"{body}{LUMP_INFIX}{name}")
     return names
 
 
@@ -84,19 +93,20 @@ def urdf_structure(model: RobotModel) -> Structure:
     geoms: List[str] = []
     body_of: Dict[str, str] = {}
     lumped_by: Dict[str, str] = {}
+    geom_links: Dict[str, str] = {}
 
     # Depth-first, as sdformat walks the tree, without recursion: a chain of a thousand
     # links (urdf_tools.model.MAX_LINKS) is deeper than Python's recursion limit.
     def gather(link: str) -> List[Joint]:
         """The body ``link`` starts: its lumped links' collisions in order; the joints to
         further bodies, in the order met."""
-        sources: List[str] = []
+        sources: List[Tuple[str, str]] = []
         kept: List[Joint] = []
         stack: List = []
 
         def visit(member: str) -> None:
             body_of[member] = link
-            sources.extend([member] * len(model.links[member].collisions))
+            sources.extend((member, shape.name) for shape in model.links[member].collisions)
             stack.append(iter(children.get(member, [])))
 
         visit(link)
@@ -109,7 +119,9 @@ def urdf_structure(model: RobotModel) -> Structure:
                 visit(joint.child)
             else:
                 kept.append(joint)
-        geoms.extend(_geom_names(link, sources))
+        names = _geom_names(link, sources)
+        geoms.extend(names)
+        geom_links.update(zip(names, (member for member, _ in sources)))
         return kept
 
     def add_body(link: str) -> None:
@@ -131,12 +143,13 @@ def urdf_structure(model: RobotModel) -> Structure:
             add_body(joint.child)
     else:
         add_body(root)
-    return Structure(tuple(bodies), tuple(joints), tuple(geoms), body_of, lumped_by)
+    return Structure(tuple(bodies), tuple(joints), tuple(geoms), body_of, lumped_by,
+                     geom_links)
 
 
 def sdf_structure(spec: ModelSpec) -> Structure:
     geoms: List[str] = []
     for link in spec.links:
-        geoms.extend(_geom_names(link.name, [link.name] * len(link.collisions)))
+        geoms.extend(_geom_names(link.name, [(link.name, "")] * len(link.collisions)))
     names = tuple(link.name for link in spec.links)
     return Structure(names, (), tuple(geoms), {name: name for name in names}, {})

@@ -104,3 +104,22 @@ def test_a_collision_the_model_lacks_leaves_the_sensor_out_naming_it(world, bus)
     assert any("'front_bumper_collision' is no collision of model 'bot'" in w
                for w in bus.warnings)
     assert "bot" in world.models
+
+
+def test_a_named_collision_is_found_by_sdformats_name_for_it(world, bus):
+    """A URDF collision with a name (Kobuki's <collision name="base">) is named after it by
+    sdformat 9: lumped into base_link after base_link's own,
+    'base_link_fixed_joint_lump__shell_collision_1' (gazebosim/sdformat sdf9 9ee2d4f
+    src/parser_urdf.cc:2880-2901, :3168-3179), and the sensor that names it feels the crate
+    (before: refused, as no link is called 'shell')."""
+    xml = robot("base_link_fixed_joint_lump__shell_collision_1").replace(
+        '<collision><geometry><box size="0.3 0.3 0.02"/>',
+        '<collision name="shell"><geometry><box size="0.3 0.3 0.02"/>')
+    world.spawn_urdf("bot", xml, (0, 0, 0.1))
+    world.add_sdf_model(crate())
+    run(world, 1.0)
+    assert not [w for w in bus.warnings if "shell" in w or "unknown attribute" in w]
+    (state,) = bus.last("/plate_bumper").states
+    assert state.collision1_name == \
+        "bot::base_link::base_link_fixed_joint_lump__shell_collision_1"
+    assert state.total_wrench.force.z == pytest.approx(-CRATE_MASS * G, rel=0.02)

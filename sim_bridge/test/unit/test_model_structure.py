@@ -79,3 +79,35 @@ def test_a_chain_of_a_thousand_links_is_walked_without_recursion():
                      f'velocity="1"/></joint>' for i in range(998))
     jointed = urdf_structure(parse_urdf(f'<robot name="r">{links}{hinged}</robot>', "chain"))
     assert len(jointed.bodies) == 999 and jointed.joints[-1] == "j997"
+
+
+def test_named_collisions_are_named_as_sdformat_9_names_them():
+    """sdformat 9 (gazebosim/sdformat sdf9 9ee2d4f src/parser_urdf.cc:2880-2901,
+    :3168-3179): <name or link>_collision, _N after the first, prefixed with the Gazebo
+    link's name and _fixed_joint_lump__ unless it begins with that link's name: Kobuki's
+    'base' lumped into base_footprint, and a named collision of a link of its own too."""
+    xml = """<robot name="k">
+      <link name="base_footprint"/>
+      <joint name="base_joint" type="fixed"><parent link="base_footprint"/>
+        <child link="base_link"/></joint>
+      <link name="base_link">
+        <collision name="base"><geometry><box size="1 1 1"/></geometry></collision>
+        <collision><geometry><box size="1 1 1"/></geometry></collision></link>
+      <joint name="wheel_joint" type="continuous"><parent link="base_link"/>
+        <child link="wheel"/><axis xyz="0 1 0"/></joint>
+      <link name="wheel">
+        <collision name="tyre"><geometry><sphere radius="0.1"/></geometry></collision>
+        <collision name="wheel_hub"><geometry><sphere radius="0.1"/></geometry></collision>
+      </link>
+    </robot>"""
+    model = parse_urdf(xml, "k")
+    assert model.warnings == []  # a collision's name is URDF, not an unknown attribute
+    structure = urdf_structure(model)
+    assert structure.geoms == (
+        "base_footprint_fixed_joint_lump__base_collision",
+        "base_footprint_fixed_joint_lump__base_link_collision_1",
+        "wheel_fixed_joint_lump__tyre_collision",
+        "wheel_hub_collision_1")
+    assert structure.geom_links["base_footprint_fixed_joint_lump__base_collision"] == \
+        "base_link"
+    assert structure.geom_links["wheel_hub_collision_1"] == "wheel"

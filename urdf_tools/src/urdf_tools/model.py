@@ -23,6 +23,7 @@ keep or does not check is done here:
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import logging
 import math
 import os
@@ -94,6 +95,8 @@ class Shape:
     geometry: Geometry
     origin: Origin = Origin()
     material: Optional[str] = None
+    # its name attribute, "" for none (URDF allows one; sdformat names a collision after it)
+    name: str = ""
 
 
 @dataclass(frozen=True)
@@ -634,6 +637,9 @@ def parse_urdf(text: str, source: str = "<string>") -> RobotModel:
         raise UrdfError(f"{source}: the top element is <{root.tag}>, not <robot>")
     _check_structure(root, source)
     robot, warnings = _read(text, source)
+    # urdf_parser_py knows no name of a visual or collision, which URDF allows (urdfdom
+    # reads it): not a fault of the file; the names are read below
+    warnings = [w for w in warnings if not _SHAPE_NAME_CHATTER.search(w)]
     materials: Dict[str, Tuple[float, float, float, float]] = {}
     for material in robot.materials:
         _remember_colour(material, materials, source)
@@ -645,6 +651,7 @@ def parse_urdf(text: str, source: str = "<string>") -> RobotModel:
         links[link.name] = link
     if not links:
         raise UrdfError(f"{source}: the robot has no links")
+    _name_collisions(root, links)
     joints = _tree(links, (_joint(joint, source) for joint in robot.joints), source)
     gazebo = [(element.get("reference"), element) for element in root.findall("gazebo")]
     transmissions = [_transmission(t) for t in root.findall("transmission")]
@@ -654,6 +661,21 @@ def parse_urdf(text: str, source: str = "<string>") -> RobotModel:
         LOG.warning("%s", warning)
     model.warnings = warnings
     return model
+
+
+_SHAPE_NAME_CHATTER = re.compile(r"(visual|collision) \d+: unknown attribute 'name', ignored$")
+
+
+def _name_collisions(root: ET.Element, links: Dict[str, Link]) -> None:
+    """Each link's collisions get their name attributes (document order, as urdf_parser_py
+    reads them)."""
+    for element in root.findall("link"):
+        link = links.get(element.get("name", ""))
+        names = [c.get("name", "") for c in element.findall("collision")]
+        if link is None or len(names) != len(link.collisions) or not any(names):
+            continue
+        links[link.name] = dataclasses.replace(link, collisions=tuple(
+            dataclasses.replace(shape, name=name) for shape, name in zip(link.collisions, names)))
 
 
 def load_urdf(path: str) -> RobotModel:

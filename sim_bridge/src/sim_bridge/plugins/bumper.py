@@ -50,14 +50,19 @@ class Bumper(Plugin):
             raise PluginError(f"sensor '{sensor.name}' of type contact needs "
                               "<contact><collision>, the name of a collision")
         self.collisions: Dict[int, str] = {}  # pybullet link → the collision's scoped name
+        structure = context.structure
         for name in names:
-            link = link_of_collision(name)
+            collision = name.rpartition("::")[2]
+            # the model's own name for it (sdformat's, model_structure), else read from the
+            # name's pattern (a model described without one)
+            link = (structure.geom_links.get(collision) if structure is not None else None) \
+                or link_of_collision(name)
             if link not in robot.link_index:
                 raise PluginError(f"sensor '{sensor.name}': <collision> '{name}' is no "
                                   f"collision of model '{context.model_name}' (links: "
                                   f"{', '.join(sorted(robot.link_index))})")
-            collision = name.rpartition("::")[2]
-            holder = collision.partition(LUMP_INFIX)[0] if LUMP_INFIX in collision else link
+            holder = structure.body_of.get(link, link) if structure is not None else \
+                (collision.partition(LUMP_INFIX)[0] if LUMP_INFIX in collision else link)
             self.collisions[robot.link_index[link]] = \
                 f"{context.model_name}::{holder}::{collision}"
         self.rate = Rate(_rate(sensor))
