@@ -12,6 +12,7 @@ import math
 import numpy as np
 import pybullet as pb
 import pytest
+from test_model_meshes import dropped_box
 from world_fixtures import run
 
 from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec, load_world, parse_model
@@ -37,13 +38,8 @@ def plane_model(name, pose, normal="0 0 1"):
         </model></sdf>""")
 
 
-def box(name, position, size=0.2, mass=1.0):
-    inertia = mass * size * size / 6
-    return parse_model(f"""<sdf version="1.6"><model name="{name}">
-        <pose>{position} 0 0 0</pose><link name="link"><inertial><mass>{mass}</mass>
-        <inertia><ixx>{inertia}</ixx><iyy>{inertia}</iyy><izz>{inertia}</izz></inertia>
-        </inertial><collision name="c"><geometry><box><size>{size} {size} {size}</size>
-        </box></geometry></collision></link></model></sdf>""")
+def box(name, position):
+    return dropped_box(name, position, size=0.2, mass=1.0)
 
 
 def ray(world, origin, direction):

@@ -8,6 +8,7 @@ import pytest
 from controller_manager_msgs.srv import LoadControllerRequest, SwitchControllerRequest
 from std_msgs.msg import Float64
 
+from one_joint_robot import one_joint_urdf
 from recording_bus import RecordingBus
 from sim_bridge.world import World
 from world_fixtures import run
@@ -23,32 +24,8 @@ CONTROLLERS = {
 def spinner_urdf(interface, joint_type="continuous", limit='<limit effort="50" velocity="2.0"/>',
                  izz=0.1):
     """A rotor on a vertical axis (gravity does not turn it) on a base fixed to the world."""
-    return f"""<?xml version="1.0"?>
-<robot name="spinner">
-  <link name="world"/>
-  <joint name="fixed" type="fixed"><parent link="world"/><child link="base_link"/></joint>
-  <link name="base_link">
-    <collision><geometry><box size="0.2 0.2 0.1"/></geometry></collision>
-    <inertial><mass value="2"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
-  </link>
-  <link name="rotor">
-    <inertial><mass value="1"/><inertia ixx="{0.6 * izz}" ixy="0" ixz="0" iyy="{0.6 * izz}" iyz="0" izz="{izz}"/></inertial>
-  </link>
-  <joint name="spin" type="{joint_type}">
-    <parent link="base_link"/><child link="rotor"/><origin xyz="0 0 0.2"/><axis xyz="0 0 1"/>
-    {limit}
-  </joint>
-  <transmission name="spin_transmission">
-    <type>transmission_interface/SimpleTransmission</type>
-    <joint name="spin"><hardwareInterface>hardware_interface/{CONTROLLERS[interface][1]}</hardwareInterface></joint>
-    <actuator name="spin_motor"><mechanicalReduction>1</mechanicalReduction></actuator>
-  </transmission>
-  <gazebo>
-    <plugin name="gazebo_ros_control" filename="libgazebo_ros_control.so">
-      <robotNamespace>/spinner</robotNamespace>
-    </plugin>
-  </gazebo>
-</robot>"""
+    return one_joint_urdf(interface, joint_type=joint_type, limit=limit,
+                          inertia=(0.6 * izz, 0.6 * izz, izz))
 
 
 def spinner(interface, params=None, **urdf):

@@ -13,45 +13,16 @@ from control_msgs.msg import JointControllerState
 from controller_manager_msgs.srv import LoadControllerRequest, SwitchControllerRequest
 from std_msgs.msg import Float64, Float64MultiArray
 
+from one_joint_robot import one_joint_urdf
 from recording_bus import RecordingBus
 from sim_bridge.ros_control.angles import shortest_angular_distance_with_large_limits
 from sim_bridge.world import World
 from world_fixtures import run
 
 MANAGER = "/spinner/controller_manager"
-INTERFACES = {"effort": "EffortJointInterface", "velocity": "VelocityJointInterface"}
 # a well-damped loop on the rotor's 0.1 kg m^2: p 20, d 2
 GAINS = {"p": 20.0, "d": 2.0}
 VELOCITY_GAINS = {"p": 5.0}
-
-
-def spinner_urdf(interface, joint_type, limit, axis="0 0 1"):
-    """A rotor on a vertical axis (gravity does not turn it) on a base fixed to the world."""
-    return f"""<?xml version="1.0"?>
-<robot name="spinner">
-  <link name="world"/>
-  <joint name="fixed" type="fixed"><parent link="world"/><child link="base_link"/></joint>
-  <link name="base_link">
-    <inertial><mass value="2"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
-  </link>
-  <link name="rotor">
-    <inertial><mass value="1"/><inertia ixx="0.06" ixy="0" ixz="0" iyy="0.06" iyz="0" izz="0.1"/></inertial>
-  </link>
-  <joint name="spin" type="{joint_type}">
-    <parent link="base_link"/><child link="rotor"/><origin xyz="0 0 0.2"/><axis xyz="{axis}"/>
-    {limit}
-  </joint>
-  <transmission name="spin_transmission">
-    <type>transmission_interface/SimpleTransmission</type>
-    <joint name="spin"><hardwareInterface>hardware_interface/{INTERFACES[interface]}</hardwareInterface></joint>
-    <actuator name="spin_motor"><mechanicalReduction>1</mechanicalReduction></actuator>
-  </transmission>
-  <gazebo>
-    <plugin name="gazebo_ros_control" filename="libgazebo_ros_control.so">
-      <robotNamespace>/spinner</robotNamespace>
-    </plugin>
-  </gazebo>
-</robot>"""
 
 
 def spinner(controller, joint_type="revolute", limit='<limit lower="-1" upper="1" effort="50" '
@@ -63,7 +34,7 @@ def spinner(controller, joint_type="revolute", limit='<limit lower="-1" upper="1
                             "type": "joint_state_controller/JointStateController",
                             "publish_rate": 100}})
     world = World(bus, ray_threads=1)
-    model = world.spawn_urdf("spinner", spinner_urdf(interface, joint_type, limit, axis),
+    model = world.spawn_urdf("spinner", one_joint_urdf(interface, joint_type=joint_type, limit=limit, axis=axis),
                              joints={"spin": position})
     for name in ("controller", "joint_state_controller"):
         assert bus.services[f"{MANAGER}/load_controller"](LoadControllerRequest(name)).ok, \
@@ -210,8 +181,8 @@ def test_the_group_position_controller_clamps_and_wraps_as_the_single_one():
         "type": "effort_controllers/JointGroupPositionController", "joints": ["spin"],
         "spin": {"pid": GAINS}}})
     world = World(bus, ray_threads=1)
-    model = world.spawn_urdf("spinner", spinner_urdf(
-        "effort", "continuous", '<limit effort="50" velocity="10"/>'), joints={"spin": 6.0})
+    model = world.spawn_urdf("spinner", one_joint_urdf(
+        "effort", joint_type="continuous", limit='<limit effort="50" velocity="10"/>'), joints={"spin": 6.0})
     assert bus.services[f"{MANAGER}/load_controller"](LoadControllerRequest("controller")).ok, \
         bus.warnings
     assert bus.services[f"{MANAGER}/switch_controller"](
@@ -274,8 +245,9 @@ def test_the_velocity_position_controller_needs_a_velocity_joint():
     bus = RecordingBus({"/spinner/controller": {"type": VELOCITY_POSITION, "joint": "spin",
                                                 "pid": VELOCITY_GAINS}})
     world = World(bus, ray_threads=1)
-    world.spawn_urdf("spinner", spinner_urdf(
-        "effort", "revolute", '<limit lower="-1" upper="1" effort="50" velocity="10"/>'))
+    world.spawn_urdf("spinner", one_joint_urdf(
+        "effort", joint_type="revolute",
+        limit='<limit lower="-1" upper="1" effort="50" velocity="10"/>'))
     assert not bus.services[f"{MANAGER}/load_controller"](LoadControllerRequest("controller")).ok
     assert any("VelocityJointInterface" in w for w in bus.warnings), bus.warnings
     world.close()

@@ -10,6 +10,7 @@ import pytest
 from controller_manager_msgs.srv import LoadControllerRequest, SwitchControllerRequest
 from std_msgs.msg import Float64
 
+from one_joint_robot import one_joint_urdf
 from recording_bus import RecordingBus
 from sim_bridge.world import World
 from world_fixtures import run
@@ -25,32 +26,11 @@ BOB_MASS, ARM_LENGTH, EFFORT_LIMIT = 1.0, 0.5, 2.0
 
 def bot_urdf(interface, axis, limit, mass=BOB_MASS, offset=-ARM_LENGTH, damping=0.0):
     """A link on a joint ``axis`` through the base, its mass ``offset`` along z from it."""
-    return f"""<?xml version="1.0"?>
-<robot name="bot">
-  <link name="world"/>
-  <joint name="fixed" type="fixed"><parent link="world"/><child link="base_link"/></joint>
-  <link name="base_link">
-    <inertial><mass value="2"/><inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.01"/></inertial>
-  </link>
-  <link name="arm">
-    <inertial><origin xyz="0 0 {offset}"/><mass value="{mass}"/>
-      <inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial>
-  </link>
-  <joint name="joint" type="{'revolute' if 'lower' in limit else 'continuous'}">
-    <parent link="base_link"/><child link="arm"/><origin xyz="0 0 1"/><axis xyz="{axis}"/>
-    {limit}<dynamics damping="{damping}"/>
-  </joint>
-  <transmission name="joint_transmission">
-    <type>transmission_interface/SimpleTransmission</type>
-    <joint name="joint"><hardwareInterface>hardware_interface/{interface.capitalize()}JointInterface</hardwareInterface></joint>
-    <actuator name="motor"><mechanicalReduction>1</mechanicalReduction></actuator>
-  </transmission>
-  <gazebo>
-    <plugin name="gazebo_ros_control" filename="libgazebo_ros_control.so">
-      <robotNamespace>/bot</robotNamespace>
-    </plugin>
-  </gazebo>
-</robot>"""
+    return one_joint_urdf(interface, robot="bot", joint="joint", child="arm",
+                          joint_type="revolute" if "lower" in limit else "continuous",
+                          limit=limit, axis=axis, origin="0 0 1", mass=mass,
+                          inertia=(0.1, 0.1, 0.1), centre_of_mass=f"0 0 {offset}",
+                          dynamics=f'<dynamics damping="{damping}"/>')
 
 
 def bot(interface, gains=None, axis="0 1 0", limit=f'<limit lower="-3" upper="3" '
