@@ -42,3 +42,15 @@ def one_joint_urdf(interface, robot="spinner", joint="spin", child="rotor",
     </plugin>
   </gazebo>
 </robot>"""
+
+
+def start_controllers(bus, robot, *names):
+    """Loads the controllers ``names`` of ``/<robot>`` and starts them together, as
+    controller_manager's spawner does; fails naming the simulator's warnings."""
+    from controller_manager_msgs.srv import LoadControllerRequest, SwitchControllerRequest
+    manager = f"/{robot}/controller_manager"
+    for name in names:
+        assert bus.services[f"{manager}/load_controller"](LoadControllerRequest(name)).ok, \
+            bus.warnings
+    assert bus.services[f"{manager}/switch_controller"](SwitchControllerRequest(
+        start_controllers=list(names), strictness=2)).ok, bus.warnings

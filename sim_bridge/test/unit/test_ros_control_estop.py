@@ -6,12 +6,12 @@ Upstream: gazebo_ros_pkgs noetic-devel f9e1a46 gazebo_ros_control/src/
 gazebo_ros_control_plugin.cpp ("plugin"), default_robot_hw_sim.cpp ("hw_sim"); ros_control
 noetic-devel 633c374 controller_manager/src/controller_manager.cpp ("CM")."""
 import pytest
-from controller_manager_msgs.srv import LoadControllerRequest, SwitchControllerRequest
 from std_msgs.msg import Bool, Float64
 
+from one_joint_robot import start_controllers
 from recording_bus import RecordingBus
 from sim_bridge.world import World
-from test_ros_control_limits import CONTROLLERS, MANAGER, spin, spinner_urdf
+from test_ros_control_limits import CONTROLLERS, spin, spinner_urdf
 from world_fixtures import run
 
 NAMESPACE_TAG = "<robotNamespace>/spinner</robotNamespace>"
@@ -27,11 +27,7 @@ def spinner(kind, joint_type="continuous", limit='<limit effort="50" velocity="2
     urdf = spinner_urdf(kind, joint_type=joint_type, limit=limit).replace(
         NAMESPACE_TAG, f"{NAMESPACE_TAG}<eStopTopic>e_stop</eStopTopic>")
     model = world.spawn_urdf("spinner", urdf)
-    for name in ("controller", "joint_state_controller"):
-        assert bus.services[f"{MANAGER}/load_controller"](LoadControllerRequest(name)).ok, \
-            bus.warnings
-    assert bus.services[f"{MANAGER}/switch_controller"](SwitchControllerRequest(
-        start_controllers=["controller", "joint_state_controller"], strictness=2)).ok
+    start_controllers(bus, "spinner", "controller", "joint_state_controller")
     return world, bus, model
 
 

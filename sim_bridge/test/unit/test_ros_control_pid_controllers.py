@@ -10,10 +10,10 @@ import math
 
 import pytest
 from control_msgs.msg import JointControllerState
-from controller_manager_msgs.srv import LoadControllerRequest, SwitchControllerRequest
+from controller_manager_msgs.srv import LoadControllerRequest
 from std_msgs.msg import Float64, Float64MultiArray
 
-from one_joint_robot import one_joint_urdf
+from one_joint_robot import one_joint_urdf, start_controllers
 from recording_bus import RecordingBus
 from sim_bridge.ros_control.angles import shortest_angular_distance_with_large_limits
 from sim_bridge.world import World
@@ -34,13 +34,9 @@ def spinner(controller, joint_type="revolute", limit='<limit lower="-1" upper="1
                             "type": "joint_state_controller/JointStateController",
                             "publish_rate": 100}})
     world = World(bus, ray_threads=1)
-    model = world.spawn_urdf("spinner", one_joint_urdf(interface, joint_type=joint_type, limit=limit, axis=axis),
-                             joints={"spin": position})
-    for name in ("controller", "joint_state_controller"):
-        assert bus.services[f"{MANAGER}/load_controller"](LoadControllerRequest(name)).ok, \
-            bus.warnings
-    assert bus.services[f"{MANAGER}/switch_controller"](SwitchControllerRequest(
-        start_controllers=["controller", "joint_state_controller"], strictness=2)).ok
+    urdf = one_joint_urdf(interface, joint_type=joint_type, limit=limit, axis=axis)
+    model = world.spawn_urdf("spinner", urdf, joints={"spin": position})
+    start_controllers(bus, "spinner", "controller", "joint_state_controller")
     return world, bus, model
 
 
@@ -182,11 +178,9 @@ def test_the_group_position_controller_clamps_and_wraps_as_the_single_one():
         "spin": {"pid": GAINS}}})
     world = World(bus, ray_threads=1)
     model = world.spawn_urdf("spinner", one_joint_urdf(
-        "effort", joint_type="continuous", limit='<limit effort="50" velocity="10"/>'), joints={"spin": 6.0})
-    assert bus.services[f"{MANAGER}/load_controller"](LoadControllerRequest("controller")).ok, \
-        bus.warnings
-    assert bus.services[f"{MANAGER}/switch_controller"](
-        SwitchControllerRequest(start_controllers=["controller"], strictness=2)).ok
+        "effort", joint_type="continuous", limit='<limit effort="50" velocity="10"/>'),
+        joints={"spin": 6.0})
+    start_controllers(bus, "spinner", "controller")
     bus.subscriptions["/spinner/controller/command"](Float64MultiArray(data=[0.1]))
     run(world, 3.0)
     assert spin(model)[0] == pytest.approx(0.1 + 2 * math.pi, abs=0.01)

@@ -7,15 +7,13 @@ Upstream: gazebo_ros_pkgs noetic-devel f9e1a46 gazebo_ros_control/src/default_ro
 import math
 
 import pytest
-from controller_manager_msgs.srv import LoadControllerRequest, SwitchControllerRequest
 from std_msgs.msg import Float64
 
-from one_joint_robot import one_joint_urdf
+from one_joint_robot import one_joint_urdf, start_controllers
 from recording_bus import RecordingBus
 from sim_bridge.world import World
 from world_fixtures import run
 
-MANAGER = "/bot/controller_manager"
 CONTROLLERS = {"position": "position_controllers/JointPositionController",
                "velocity": "velocity_controllers/JointVelocityController"}
 GRAVITY = 9.81
@@ -44,11 +42,7 @@ def bot(interface, gains=None, axis="0 1 0", limit=f'<limit lower="-3" upper="3"
     world = World(bus, ray_threads=1)
     model = world.spawn_urdf("bot", bot_urdf(interface, axis, limit, **urdf),
                              joints={"joint": position})
-    for name in ("controller", "joint_state_controller"):
-        assert bus.services[f"{MANAGER}/load_controller"](LoadControllerRequest(name)).ok, \
-            bus.warnings
-    assert bus.services[f"{MANAGER}/switch_controller"](SwitchControllerRequest(
-        start_controllers=["controller", "joint_state_controller"], strictness=2)).ok
+    start_controllers(bus, "bot", "controller", "joint_state_controller")
     return world, bus, model
 
 
