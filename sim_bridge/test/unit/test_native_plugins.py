@@ -310,3 +310,102 @@ def test_a_sensor_plugin_hears_its_contact_sensor_at_its_rate(plugin_world, plug
     assert int(words[3]) >= 1
     assert words[5] == "tutorial_box::body::body_collision"
     assert words[6].startswith("ground::")
+
+
+# A car with the LIMO's layout (test/data/gazebo_plugins/ackermann_drive.cc): the base's
+# origin on the rear axle, whose middle follows the commanded circle
+WHEELBASE = 0.3
+TRACK = 0.26
+WHEEL_RADIUS = 0.05
+CAR_SPEED = 0.5  # m/s
+CAR_CURVATURES = (1.0, -0.8)  # 1/m: a 1 m circle to the left, a 1.25 m one to the right
+CAR_SECONDS = 6.0  # three fifths of a circle or more
+RADIUS_TOLERANCE = 0.10  # the issue's: the circle's radius within 10 % of 1 / curvature
+STEER_TOLERANCE = 0.01  # rad: a stiff PID's offset against the tyres' pull
+
+
+def _inertial(mass, x=0.0):
+    inertia = mass * 0.01
+    return (f"<inertial><origin xyz='{x} 0 0'/><mass value='{mass}'/><inertia ixx='{inertia}' "
+            f"ixy='0' ixz='0' iyy='{inertia}' iyz='0' izz='{inertia}'/></inertial>")
+
+
+def _ackermann_car(curvature):
+    wheel = (f"<collision><origin rpy='{math.pi / 2} 0 0'/><geometry><cylinder "
+             f"radius='{WHEEL_RADIUS}' length='0.04'/></geometry></collision>{_inertial(0.2)}")
+    links, joints = [], []
+    for side, y in (("left", TRACK / 2), ("right", -TRACK / 2)):
+        links.append(f"<link name='{side}_rear_wheel'>{wheel}</link>")
+        joints.append(f"<joint name='{side}_rear_joint' type='continuous'><parent link='base_link'/>"
+                      f"<child link='{side}_rear_wheel'/><origin xyz='0 {y} 0'/>"
+                      f"<axis xyz='0 1 0'/></joint>")
+        links.append(f"<link name='{side}_hinge'>{_inertial(0.05)}</link>")
+        joints.append(f"<joint name='{side}_steer_joint' type='revolute'><parent link='base_link'/>"
+                      f"<child link='{side}_hinge'/><origin xyz='{WHEELBASE} {y} 0'/>"
+                      f"<axis xyz='0 0 1'/><limit lower='-0.7' upper='0.7' effort='20' "
+                      f"velocity='5'/></joint>")
+        links.append(f"<link name='{side}_front_wheel'>{wheel}</link>")
+        joints.append(f"<joint name='{side}_front_joint' type='continuous'><parent "
+                      f"link='{side}_hinge'/><child link='{side}_front_wheel'/>"
+                      f"<axis xyz='0 1 0'/></joint>")
+    return f"""<robot name="car">
+  <link name="base_link">
+    <collision><origin xyz="{WHEELBASE / 2} 0 0.04"/><geometry><box size="0.4 0.2 0.05"/>
+    </geometry></collision>{_inertial(3.0, WHEELBASE / 2)}
+  </link>
+  {''.join(links)}{''.join(joints)}
+  <gazebo><plugin name="drive" filename="libackermann_drive.so">
+    <leftSteerJoint>left_steer_joint</leftSteerJoint>
+    <rightSteerJoint>right_steer_joint</rightSteerJoint>
+    <leftRearJoint>left_rear_joint</leftRearJoint><rightRearJoint>right_rear_joint</rightRearJoint>
+    <wheelbase>{WHEELBASE}</wheelbase><track>{TRACK}</track>
+    <wheelDiameter>{2 * WHEEL_RADIUS}</wheelDiameter><torque>5</torque>
+    <steerP>40</steerP><steerD>1</steerD><steerTorque>20</steerTorque>
+    <linear>{CAR_SPEED}</linear><curvature>{curvature}</curvature>
+  </plugin></gazebo>
+</robot>"""
+
+
+def _joint_position(world, model_name, joint):
+    import pybullet as pb
+    robot = world.model(model_name).robot
+    return pb.getJointState(robot.id, robot.joint_index[joint], physicsClientId=world.client)[0]
+
+
+def _fitted_circle(points):
+    """The least-squares circle (Kasa's fit) through (x, y) points: its centre and radius."""
+    import numpy
+    xy = numpy.asarray(points)
+    design = numpy.column_stack((2 * xy[:, 0], 2 * xy[:, 1], numpy.ones(len(xy))))
+    (cx, cy, c), *_ = numpy.linalg.lstsq(design, (xy ** 2).sum(axis=1), rcond=None)
+    return (cx, cy), math.sqrt(c + cx ** 2 + cy ** 2)
+
+
+@pytest.mark.parametrize("curvature", CAR_CURVATURES)
+def test_an_ackermann_plugin_follows_the_circle_of_its_curvature(plugin_world, curvature):
+    """Steering hinges held at their Ackermann angles by common::PID efforts, rear wheels by
+    velocity motors: the rear axle's middle runs on a circle of radius 1 / curvature (10 %),
+    on the commanded side, at the commanded speed, in ground truth."""
+    world, bus = plugin_world
+    _ground(world)
+    world.spawn_urdf("car", _ackermann_car(curvature), (0, 0, WHEEL_RADIUS + 0.005))
+    assert bus.warnings == []
+    for _ in range(round(SPIN_UP_SECONDS / world.step_size)):
+        world.step()
+    track, steps = [], round(CAR_SECONDS / world.step_size)
+    for step in range(steps):
+        world.step()
+        if step % 100 == 0:
+            track.append(world.pose("car")[0][:2])
+    (cx, cy), radius = _fitted_circle(track)
+    # the hinges at their Ackermann angles: what common::PID's efforts hold
+    turn_radius = 1 / curvature
+    for side, offset in (("left", -TRACK / 2), ("right", TRACK / 2)):
+        assert _joint_position(world, "car", f"{side}_steer_joint") == pytest.approx(
+            math.atan(WHEELBASE / (turn_radius + offset)), abs=STEER_TOLERANCE)
+    assert radius == pytest.approx(1 / abs(curvature), rel=RADIUS_TOLERANCE)
+    # the centre on the car's left for a positive curvature (REP 103: y left)
+    start_x, start_y = track[0]
+    assert math.copysign(1, curvature) * (cy - start_y) > 0
+    arc = sum(math.dist(a, b) for a, b in zip(track, track[1:]))
+    assert arc / ((len(track) - 1) * 100 * world.step_size) == pytest.approx(CAR_SPEED, rel=0.05)
