@@ -4,7 +4,8 @@ velocity and linear acceleration of the sensor's link, in the sensor's frame.
 From the sensor: ``<pose>`` (in the link), ``<update_rate>`` (Hz; 0 every step): when the
 sensor measures. From the plugin, as gazebo_ros (noetic-devel f9e1a46,
 gazebo_plugins/src/gazebo_ros_imu_sensor.cpp) reads them: topicName (imu_data, :197),
-frameName (required: without it the plugin stops loading and publishes nothing, :207-210),
+frameName (required: without it the plugin stops loading and publishes nothing, :207-210;
+the header's frame as written, no tf_prefix, a leading '/' kept, :204, :138),
 updateRateHZ (1 Hz when absent, :221: at most one message per 1/updateRateHZ s of the
 sensor's update times, so never faster than the sensor; 0: every step, :99),
 gaussianNoise (standard deviation added to each of the orientation quaternion's four
@@ -58,7 +59,10 @@ class ImuSensor(Plugin):
         self.sensor_rate = Rate(self._update_rate(sensor))
         self.publish_period_ns = self._publish_period_ns(self.number("updateRateHZ", 1.0))
         self.noise = self.number("gaussianNoise", 0.0)
-        self.frame_id = self.frame(frame)
+        # the header's frame is the tag's text as written: no tf_prefix, a leading '/'
+        # kept (gazebo_plugins/src/gazebo_ros_imu_sensor.cpp:204, :138; unlike the laser's,
+        # range's and camera's tf::resolve)
+        self.frame_id = frame
         self.output = context.bus.publisher(self.topic(self.param("topicName", "imu_data")),
                                             Imu, queue_size=1)
         self._last = None  # (time ns, velocity of the sensor point in the world)
