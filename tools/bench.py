@@ -34,6 +34,9 @@ The scene (tools/bench/): a closed hall with 40 static objects and an RB1-class 
                                 BENCH_SOAK_MINUTES (default 10; 0 leaves it out): driving
                                 back and forth and /rotate_robot calls; the simulator's RSS
                                 growth after the first minute, and the calls that failed
+  Gazebo C++ plugin             tools/bench/plugin_cost.py: Gazebo's model_push plugin pushing
+                                a box, 10,000 steps, against the box pushed by one pybullet
+                                call a step: microseconds per step the plugin adds
   MoveIt                        tools/bench/moveit_cost.py: move_group (xsarm_moveit.launch,
                                 fake controllers) up after roslaunch; plan_kinematic_path
                                 for 200 random reachable pose targets in the table scene
@@ -63,6 +66,7 @@ sys.path.insert(0, BENCH)
 import laser_cost  # noqa: E402  (tools/bench/ is not a package)
 import ik_cost  # noqa: E402
 import moveit_cost  # noqa: E402
+import plugin_cost  # noqa: E402
 
 WINDOW = 10.0  # wall seconds each rate is measured over
 STEP_240 = 1.0 / 240.0  # the step of the second world (pybullet's default)
@@ -95,6 +99,8 @@ TARGETS = {
     # a 15 Hz 320x240 camera takes at most a third of a core (15 images of 20 ms)
     "cameras watched at real time: real-time factor": (">=", 0.99),
     "camera image 320x240 (ms)": ("<=", 20.0),
+    # issue 35: a Gazebo C++ plugin's callback, the host's lockstep included
+    "Gazebo C++ plugin, per step beyond the physics (us)": ("<=", 20.0),
     # the depth camera at 10 Hz beside it: at most a tenth of a core more (10 of 10 ms)
     "depth image and cloud 160x120 (ms)": ("<=", 10.0),
 }
@@ -497,6 +503,8 @@ def main() -> int:
     lasers = laser_cost.measure()
     print("bench: camera images...", flush=True)
     images = measure_images()
+    print("bench: a Gazebo C++ plugin...", flush=True)
+    native = plugin_cost.measure()
     print("bench: IK round trips...", flush=True)
     iks = ik_cost.measure()
     one, eight = crowd[1]["cpu_ms_per_sim_s"], crowd[8]["cpu_ms_per_sim_s"]
@@ -524,6 +532,7 @@ def main() -> int:
         ("depth image and cloud 160x120 (ms)", images["depth"], "{:.1f}"),
         ("stopped subscriber: real-time factor kept (%)", 100.0 * stopped["rtf"] / fast["rtf"],
          "{:.0f}"),
+        ("Gazebo C++ plugin, per step beyond the physics (us)", native["cost"], "{:.1f}"),
     ]
     rows += [(name, value["after"], "{:.3f}") for name, value in lasers.items()
              if isinstance(value, dict) and "scan" in name]

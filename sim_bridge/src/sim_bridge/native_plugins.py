@@ -40,11 +40,9 @@ RaySensor, ImuSensor) when its plugins load, before their ``Load``; they are mea
 from __future__ import annotations
 
 import atexit
-import math
 import xml.etree.ElementTree as ET
 from typing import TYPE_CHECKING, Callable, List, Optional, Sequence, Tuple
 
-import numpy as np
 import pybullet as pb
 
 from sim_bridge.native_sensors import NativeSensors
@@ -173,11 +171,6 @@ class NativePlugins:
         self.sensors = NativeSensors(self.world)
 
 
-def _twist_kept(new: Sequence[float], old: Sequence[float]) -> np.ndarray:
-    """``new`` where it is a number, ``old`` where it is NaN (kept)."""
-    return np.array([o if math.isnan(n) else n for n, o in zip(new, old)])
-
-
 def WorldBackend(host, world: "World", sensors: NativeSensors):
     """A gazebo_compat::Backend over ``world`` (the class derives from the host module's
     Backend, so it is made once the module is imported)."""
@@ -235,9 +228,7 @@ def WorldBackend(host, world: "World", sensors: NativeSensors):
             model = world.model(model_name)
             if model.kind == "static":
                 return
-            linear, angular = world.twist(model_name)
-            new = _twist_kept(twist, [*linear, *angular])
-            world.set_twist(model_name, new[:3], new[3:])
+            world.set_twist(model_name, twist[:3], twist[3:])
 
         def set_link_velocity(self, model_name: str, link: str, twist: Sequence[float]) -> None:
             model = world.model(model_name)

@@ -312,8 +312,20 @@ def _moved(linear: Sequence[float], angular: Sequence[float], origin: Sequence[f
            point: Sequence[float]) -> np.ndarray:
     """The velocity of ``point`` on a rigid body whose ``origin`` moves at ``linear`` while
     it turns at ``angular``."""
-    return np.asarray(linear, dtype=float) + np.cross(
-        np.asarray(angular, dtype=float), np.asarray(point, dtype=float) - np.asarray(origin))
+    return np.asarray(_moved_floats(linear, angular, origin, point))
+
+
+def _moved_floats(linear: Sequence[float], angular: Sequence[float], origin: Sequence[float],
+                  point: Sequence[float]) -> List[float]:
+    """:func:`_moved` in floats, for the per-step callers (numpy's small arrays cost µs)."""
+    turned = _cross(angular, (point[0] - origin[0], point[1] - origin[1], point[2] - origin[2]))
+    return [linear[0] + turned[0], linear[1] + turned[1], linear[2] + turned[2]]
+
+
+def _cross(a: Sequence[float], b: Sequence[float]) -> Tuple[float, float, float]:
+    """a × b of two 3-vectors, in floats: numpy's cross takes ~19 µs on 3-vectors here, and a
+    Gazebo plugin's SetLinearVel reaches here once a step."""
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
 
 def pose_matrix(position: Sequence[float], orientation: Sequence[float]) -> np.ndarray:
@@ -1455,15 +1467,21 @@ class World:
 
     # --- what Gazebo's C++ plugins set (sim_bridge.native_plugins) --------------------------
     def set_twist(self, name: str, linear: Sequence[float], angular: Sequence[float]) -> None:
-        """A free model's velocity (of its frame's origin, world axes), its pose kept."""
+        """A free model's velocity (of its frame's origin, world axes), its pose kept; a NaN
+        component keeps the one the model has (Model::SetLinearVel keeps the angular)."""
         model = self.model(name)
         body = model.robot.id if model.robot is not None else model.body
         if body is None:
             return
-        com = np.asarray(pb.getBasePositionAndOrientation(body, physicsClientId=self.client)[0])
-        origin = np.asarray(self.pose(name)[0])
-        com_linear = np.asarray(linear, float) + np.cross(angular, com - origin)
-        pb.resetBaseVelocity(body, com_linear.tolist(), list(angular),
+        com = pb.getBasePositionAndOrientation(body, physicsClientId=self.client)[0]
+        origin = self.pose(name)[0]
+        if any(map(math.isnan, (*linear, *angular))):
+            had_linear, had_angular = pb.getBaseVelocity(body, physicsClientId=self.client)
+            angular = [o if math.isnan(n) else n for n, o in zip(angular, had_angular)]
+            had_linear = _moved_floats(had_linear, had_angular, com, origin)
+            linear = [o if math.isnan(n) else n for n, o in zip(linear, had_linear)]
+        com_linear = _moved_floats(linear, angular, origin, com)
+        pb.resetBaseVelocity(body, com_linear, list(angular),
                              physicsClientId=self.client)
 
     def add_link_wrench(self, model_name: str, link: str, force: Sequence[float],

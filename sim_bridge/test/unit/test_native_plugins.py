@@ -409,3 +409,24 @@ def test_an_ackermann_plugin_follows_the_circle_of_its_curvature(plugin_world, c
     assert math.copysign(1, curvature) * (cy - start_y) > 0
     arc = sum(math.dist(a, b) for a, b in zip(track, track[1:]))
     assert arc / ((len(track) - 1) * 100 * world.step_size) == pytest.approx(CAR_SPEED, rel=0.05)
+
+
+def test_set_linear_vel_keeps_the_spin_and_sets_the_frames_velocity(plugin_world):
+    """Model::SetLinearVel reaches World.set_twist with the angular part NaN: the model's
+    spin is kept, and the velocity set is its frame origin's, not its centre of mass's
+    (here 0.2 m off the origin), as Gazebo's Link::SetLinearVel sets the link frame's."""
+    world, _bus = plugin_world
+    nan = float("nan")
+    world.spawn_urdf("spinner", f"""<robot name="spinner"><link name="body">
+      <collision><geometry><box size="0.2 0.2 0.2"/></geometry></collision>
+      {_inertial(1.0, 0.2)}</link></robot>""", (0, 0, 5))
+    world.set_model_gravity("spinner", False)
+    world.set_state("spinner", (0, 0, 5), (0, 0, 0, 1), (0, 0, 0), (0, 0, 1.5))
+    world.set_twist("spinner", (0.4, -0.1, 0.0), (nan, nan, nan))
+    linear, angular = world.twist("spinner")
+    assert list(angular) == pytest.approx([0, 0, 1.5], abs=1e-9)
+    assert list(linear) == pytest.approx([0.4, -0.1, 0.0], abs=1e-9)
+    world.set_twist("spinner", (nan, nan, nan), (0.0, 0.0, -0.5))
+    linear, angular = world.twist("spinner")
+    assert list(angular) == pytest.approx([0, 0, -0.5], abs=1e-9)
+    assert list(linear) == pytest.approx([0.4, -0.1, 0.0], abs=1e-9)
