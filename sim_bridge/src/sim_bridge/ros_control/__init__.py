@@ -38,6 +38,7 @@ from controller_manager_msgs.srv import (ListControllers, ListControllersRespons
                                          UnloadControllerResponse)
 
 from sim_bridge.plugins.base import Plugin, PluginError, Rate, resolve_topic
+from sim_bridge.ros_control.ackermann_steering_controller import AckermannSteeringController
 from sim_bridge.ros_control.diff_drive_controller import DiffDriveController
 from sim_bridge.ros_control.hardware import RobotHardware
 from sim_bridge.ros_control.joint_controllers import (EffortController, EffortPositionController,
@@ -69,6 +70,7 @@ CONTROLLER_TYPES = {
     "effort_controllers/JointGroupEffortController": GroupEffortController,
     "effort_controllers/JointGroupPositionController": GroupEffortPositionController,
     "diff_drive_controller/DiffDriveController": DiffDriveController,
+    "ackermann_steering_controller/AckermannSteeringController": AckermannSteeringController,
 }
 # ros_controllers' types (noetic-devel 678b92a joint_trajectory_controller/
 # joint_trajectory_controller_plugins.xml, src/joint_trajectory_controller.cpp:69-95) whose
@@ -266,9 +268,8 @@ class RosControl(Plugin):
         states = []
         for name, loaded in self.controllers.items():
             controller = loaded.controller
-            claimed = ([HardwareInterfaceResources(INTERFACE_NAMES[controller.interface],
-                                                   list(controller.joints))]
-                       if controller.interface else [])
+            claimed = [HardwareInterfaceResources(INTERFACE_NAMES[interface], joints)
+                       for interface, joints in controller.claimed()]
             states.append(ControllerState(name, loaded.state, loaded.type, claimed))
         return ListControllersResponse(states)
 

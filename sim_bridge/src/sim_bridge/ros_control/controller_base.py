@@ -3,7 +3,7 @@
 simulated time, stopped, closed."""
 from __future__ import annotations
 
-from typing import Any, List, Mapping, Optional
+from typing import Any, List, Mapping, Optional, Tuple
 
 from sim_bridge.plugins.base import PluginError
 
@@ -47,6 +47,11 @@ class Controller:
                                   f"transmission gives {handle.interface.capitalize()}"
                                   "JointInterface")
         self.joints = list(joints)
+
+    def claimed(self) -> List[Tuple[str, List[str]]]:
+        """(interface, joints) for each hardware interface it commands joints through, as
+        list_controllers reports them; one, or none for a controller that only reads."""
+        return [(self.interface, list(self.joints))] if self.interface else []
 
     # --- life cycle -------------------------------------------------------------------------
     def start(self, now_ns: int) -> None:
