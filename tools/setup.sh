@@ -30,7 +30,9 @@ check_platform
 # topic_tools' relay and throttle, rviz and robot_state_publisher as C++ libraries,
 # tf_conversions for students' movers); what Gazebo's C++ plugin API is built on
 # (compat/gazebo_dev: the real sdformat 12 and ignition-math6) and sim_bridge's plugin host
-# (a pybind11 module).
+# (a pybind11 module); what robot packages' other build dependencies stand on: Debian's
+# dynamic_reconfigure (.cfg generation, dynparam, the C++ and Python servers), the linters
+# compat/roslint runs (cpplint, pycodestyle), TinyXML (compat/control_toolbox's Pid::initXml).
 apt_packages=(
   catkin catkin-lint python3-catkin-pkg ros-message-generation ros-message-runtime
   python3-genpy python3-genmsg cmake make g++
@@ -55,6 +57,8 @@ apt_packages=(
   xvfb xauth x11-utils xdotool imagemagick
   python3-venv python3-pip
   libsdformat-dev libignition-math-dev pybind11-dev python3-dev
+  libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure cpplint
+  python3-pycodestyle libtinyxml-dev
 )
 missing=()
 for pkg in "${apt_packages[@]}"; do
