@@ -43,6 +43,7 @@ import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from typing import Callable, Dict, List, Optional, Sequence, Tuple, Union
 
+from sim_bridge.heightmap import Heightmap, HeightmapError, load_heightmap
 from sim_bridge.materials import gazebo_colour
 from sim_bridge.mesh_files import MeshError, bounds, collision_fallback, loadable_file
 from sim_bridge.poses import compose6
@@ -136,7 +137,8 @@ class _Warnings:
 
 @dataclass
 class ShapeSpec:
-    """One collision or visual: ``kind`` box | cylinder | sphere | plane | mesh."""
+    """One collision or visual: ``kind`` box | cylinder | sphere | plane | mesh |
+    heightmap (a collision only: its terrain in ``heightmap``)."""
 
     kind: str
     pose: Pose6 = ZERO_POSE
@@ -148,6 +150,7 @@ class ShapeSpec:
     scale: Tuple[float, float, float] = (1.0, 1.0, 1.0)
     rgba: Optional[Tuple[float, float, float, float]] = None
     friction: Optional[float] = None
+    heightmap: Optional[Heightmap] = None
 
 
 @dataclass
@@ -304,11 +307,41 @@ def _material(visual: ET.Element, what: str,
     return None
 
 
-def _shape(element: ET.Element, what: str, source: str, model_dir: str) -> ShapeSpec:
+# the elements SDF 1.6 allows in a <geometry> (sdformat sdf9 66a8c21 sdf/1.6/geometry.sdf)
+SDF_GEOMETRIES = ("empty", "box", "cylinder", "heightmap", "image", "mesh", "plane",
+                  "polyline", "sphere")
+
+
+class _UnreadableHeightmap(Exception):
+    """A <heightmap> Gazebo cannot build (its image missing, unreadable, of the wrong
+    size): its URI and why."""
+
+    def __init__(self, uri: str, reason: str):
+        super().__init__(f"{uri}: {reason}")
+        self.uri, self.reason = uri, reason
+
+
+def _geometry_shape(element: ET.Element) -> Optional[ET.Element]:
+    """The shape of an element's ``<geometry>`` as Gazebo takes it: the first child SDF
+    knows. sdformat 9 reads the children its schema has in document order and moves any
+    other (a ``<material>`` written inside the geometry, as public models do) after them
+    without a word (src/parser.cc:1075-1111, a debug line only), and Gazebo builds the
+    geometry's first element (gazebo 11.10.2 gazebo/physics/Link.cc:692-693,
+    Collision.cc:119)."""
     geometry = element.find("geometry")
-    if geometry is None or len(geometry) == 0:
+    if geometry is None:
+        return None
+    # none SDF knows: the first child, which Gazebo cannot build either (named in the error)
+    return next((child for child in geometry if child.tag in SDF_GEOMETRIES),
+                geometry[0] if len(geometry) else None)
+
+
+def _shape(element: ET.Element, what: str, source: str, model_dir: str,
+           notes: Optional[List[str]] = None) -> ShapeSpec:
+    """``notes``: where Gazebo's errors that do not stop the shape are added."""
+    shape = _geometry_shape(element)
+    if shape is None:
         raise SdfError(f"{source}: {what} has no <geometry>")
-    shape = geometry[0]
     pose = _pose(element, what, source)
     kind = shape.tag
     if kind == "box":
@@ -336,9 +369,19 @@ def _shape(element: ET.Element, what: str, source: str, model_dir: str) -> Shape
         scale = _numbers(shape.findtext("scale") or "1 1 1", 3, f"{what} mesh <scale>", source)
         spec = ShapeSpec("mesh", pose, filename=_mesh_file(uri, model_dir),
                          scale=scale)  # type: ignore[arg-type]
+    elif kind == "heightmap":
+        uri = (shape.findtext("uri") or "").strip()
+        try:
+            terrain, found = load_heightmap(shape, _resource_path(uri, model_dir))
+        except (HeightmapError, OSError) as error:
+            raise _UnreadableHeightmap(uri, str(error)) from None
+        if notes is not None:
+            notes.extend(found)
+        spec = ShapeSpec("heightmap", pose, size=terrain.size, filename=terrain.image,
+                         heightmap=terrain)
     else:
         raise SdfError(f"{source}: {what} has geometry <{kind}>; sim_bridge reads box, "
-                       "cylinder, sphere, plane and mesh")
+                       "cylinder, sphere, plane, mesh and heightmap")
     spec.friction = _friction(element, what, source)
     return spec
 
@@ -356,24 +399,30 @@ def _mesh_file(uri: str, model_dir: str) -> str:
     _UnreadableMesh when there is none."""
     if not uri:
         raise _UnreadableMesh(uri, "is empty (the <mesh> has no <uri>)")
-    if uri.startswith("model://"):
-        name, _, rest = uri[len("model://"):].partition("/")
-        folders = model_search_path()
-        candidates = [os.path.join(folder, name, rest) for folder in folders]
-        found = [c for c in candidates if os.path.exists(c)]
-        if not found:
-            raise _UnreadableMesh(uri, f"is not found (searched {', '.join(candidates)}; "
-                                  "GAZEBO_MODEL_PATH, then sim_bridge's models/)")
-        path = found[0]
-    else:
-        path = uri[len("file://"):] if uri.startswith("file://") else uri
-        if not os.path.isabs(path):
-            path = os.path.join(model_dir, path)
+    try:
+        path = _resource_path(uri, model_dir)
+    except OSError as error:
+        raise _UnreadableMesh(uri, str(error)) from None
     try:
         return loadable_file(path)
     except MeshError as error:
         raise _UnreadableMesh(uri, f"{'(' + path + ') ' if path != uri else ''}{error}") \
             from None
+
+
+def _resource_path(uri: str, model_dir: str) -> str:
+    """The file a ``model://NAME/...``, ``file://`` or relative URI names (relative: to the
+    model's folder); OSError naming the folders searched for a model:// one not found."""
+    if uri.startswith("model://"):
+        name, _, rest = uri[len("model://"):].partition("/")
+        candidates = [os.path.join(folder, name, rest) for folder in model_search_path()]
+        found = [c for c in candidates if os.path.exists(c)]
+        if not found:
+            raise OSError(f"is not found (searched {', '.join(candidates)}; "
+                          "GAZEBO_MODEL_PATH, then sim_bridge's models/)")
+        return found[0]
+    path = uri[len("file://"):] if uri.startswith("file://") else uri
+    return path if os.path.isabs(path) else os.path.join(model_dir, path)
 
 
 def _bounding_box(visual: ShapeSpec, friction: Optional[float]) -> ShapeSpec:
@@ -394,6 +443,8 @@ def _link(element: ET.Element, model: str, source: str, model_dir: str,
     visual_meshes: List[Tuple[str, ShapeSpec]] = []
     for index, visual in enumerate(element.findall("visual")):
         label = f"{what} visual '{visual.get('name', index)}'"
+        if _tag(_geometry_shape(visual)) == "heightmap":
+            continue  # pybullet draws the terrain's collision body (a body without a visual)
         try:
             shape = _shape(visual, label, source, model_dir)
         except _UnreadableMesh as mesh:
@@ -409,12 +460,20 @@ def _link(element: ET.Element, model: str, source: str, model_dir: str,
     friction: Optional[float] = None
     for index, collision in enumerate(element.findall("collision")):
         label = f"{what} collision '{collision.get('name', index)}'"
+        notes: List[str] = []
         try:
-            link.collisions.append(_shape(collision, label, source, model_dir))
+            link.collisions.append(_shape(collision, label, source, model_dir, notes))
+        except _UnreadableHeightmap as terrain:
+            warnings.add(("heightmap", terrain.uri, terrain.reason),
+                         f"{source}: {label}: heightmap '{terrain.uri}' {terrain.reason}; the "
+                         "terrain is left out, the world runs without it")
+            continue
         except _UnreadableMesh as mesh:
             failed.append((label, mesh))
             friction = friction if friction is not None \
                 else _friction(collision, label, source)
+        for note in notes:
+            warnings.add(("heightmap note", note), f"{source}: {label}: heightmap {note}")
     if failed:
         _replace_collisions(link, failed, visual_meshes, friction, source, warnings)
     inertial = element.find("inertial")
@@ -503,6 +562,10 @@ def _model(element: ET.Element, source: str, model_dir: str, warnings: _Warnings
     model.plugins = element.findall("plugin")
     for link in element.findall("link"):
         model.links.append(_link(link, name, source, model_dir, warnings))
+    if any(shape.kind == "heightmap" for link in model.links for shape in link.collisions):
+        # Gazebo makes a link with a heightmap collision static (gazebo 11.10.2
+        # gazebo/physics/Link.cc:695-696); a terrain model has that one link
+        model.static = static = True
     for nested in element.findall("include"):
         inner = _include(nested, source, warnings, chain)
         if isinstance(inner, ModelSpec):  # a light in a model is not read
@@ -514,6 +577,10 @@ def _model(element: ET.Element, source: str, model_dir: str, warnings: _Warnings
             raise UnsupportedModel(f"{source}: model '{name}' cannot be built: {error}") \
                 from None
     return model
+
+
+def _tag(element: Optional[ET.Element]) -> Optional[str]:
+    return None if element is None else element.tag
 
 
 def _offset_links(model: ModelSpec) -> List[LinkSpec]:

@@ -558,6 +558,9 @@ class World:
                              meshScale=list(shape.scale))
             if collision and concave:
                 arguments["flags"] = pb.GEOM_FORCE_CONCAVE_TRIMESH
+        elif shape.kind == "heightmap":  # a collision only (sdf_world leaves its visual out)
+            arguments = dict(shapeType=pb.GEOM_HEIGHTFIELD,
+                             **shape.heightmap.shape_arguments())
         elif shape.kind == "plane":
             if collision:
                 arguments = dict(shapeType=pb.GEOM_PLANE, planeNormal=list(shape.normal))
@@ -599,6 +602,9 @@ class World:
                     made_at = compose6(compose6(model.spec.plane_pose, link.pose), shape.pose)
                     pose = self._plane_placement(made_at, shape.normal)
                     shape = dataclasses.replace(shape, normal=(0.0, 0.0, 1.0))
+                if shape.kind == "heightmap":  # pybullet centres it between its extremes
+                    pose = compose6(pose, (0.0, 0.0, shape.heightmap.centre_height(),
+                                           0.0, 0.0, 0.0))
                 # a link's only visual rides on its first collision body: half the bodies
                 visual = -1
                 if len(link.visuals) == 1 and visuals:
@@ -611,9 +617,9 @@ class World:
                     else min(shape.friction, WORLD_FRICTION)
                 pb.changeDynamics(body, -1, lateralFriction=friction, physicsClientId=self.client)
                 model.static_bodies.append(body)
-                if shape.kind == "mesh":
+                if shape.kind in ("mesh", "heightmap"):
                     model.mesh_holders.append((body, -1))
-                if shape.kind != "mesh":  # meshes: lasers ask pybullet (see cast_rays)
+                else:  # meshes and terrain: lasers ask pybullet (see cast_rays)
                     model.primitives.append(primitive_for(
                         shape.kind, pose6_matrix(pose), size=shape.size, radius=shape.radius,
                         length=shape.length))

@@ -388,12 +388,47 @@ def _read(text: str, source: str):
     for tag in ("gazebo", "transmission"):  # read with ElementTree (see the module's doc)
         for element in root.findall(tag):
             root.remove(element)
+    ignored = _first_shape_only(root, source)
     with _captured_chatter() as chatter:
         try:
             robot = upp.URDF.from_xml(root, upp_core.Path(upp.URDF.XML_REFL.tag))
         except Exception as error:  # urdf_parser_py raises many kinds; all mean "refused"
             raise _refusal(error, root, source) from None
-    return robot, [f"{source}: {_chatter_warning(message)}" for message in chatter]
+    return robot, ignored + [f"{source}: {_chatter_warning(message)}" for message in chatter]
+
+
+def _first_shape_only(root, source: str) -> List[str]:
+    """Each ``<geometry>`` read as urdfdom reads it (the parser behind Gazebo's URDF
+    import, sdformat sdf9 66a8c21 src/urdf/urdf_parser/link.cpp:229-275, and robot_state_
+    publisher's and rviz's): its first child element is the shape, whatever follows it is
+    not looked at. Public descriptions put a ``<material>`` inside a mesh's geometry, which
+    Gazebo loads without a word; urdf_parser_py refuses the robot for it ("One element only
+    for geometric"). The elements after the shape are removed here, each named in a
+    warning. A first element that is not a shape is refused, as urdfdom refuses it
+    ("Unknown geometry type") and Gazebo then spawns nothing."""
+    warnings = []
+    for link in root.iterfind("link"):
+        for kind in ("visual", "collision"):
+            for index, holder in enumerate(link.iterfind(kind)):
+                geometry = holder.find("geometry")
+                children = [] if geometry is None else \
+                    [child for child in geometry if isinstance(child.tag, str)]
+                if len(children) < 2:
+                    continue  # urdf_parser_py reads one element as urdfdom does
+                where = f"{source}: link '{link.get('name')}' {kind} {index} geometry"
+                if children[0].tag not in _SHAPES:
+                    raise UrdfError(
+                        f"{where}: its first element is <{children[0].tag}>, not a shape ("
+                        f"{', '.join(_SHAPES)}); Gazebo's URDF reader (urdfdom) takes the "
+                        "first element as the shape and refuses the robot ('Unknown geometry "
+                        "type'): put the shape first")
+                for child in children[1:]:
+                    geometry.remove(child)
+                names = ", ".join(f"<{child.tag}>" for child in children[1:])
+                warnings.append(
+                    f"{where}: {names} after the <{children[0].tag}> ignored; the shape is "
+                    "the geometry's first element, as Gazebo's URDF reader (urdfdom) takes it")
+    return warnings
 
 
 # --- conversion into the dataclasses, with the checks urdf_parser_py does not make ------
