@@ -524,6 +524,16 @@ def test_enable_odom_tf_false_sends_no_transform():
     world.close()
 
 
+def test_publish_cmd_is_not_a_parameter_of_noetics_ackermann_controller():
+    """ASC:125-257 read no publish_cmd (diff_drive_controller's, DDC:161, :276): with it set
+    nothing goes out on cmd_vel_out."""
+    world, bus, _ = steer_bot(publish_cmd=True)
+    drive_for(world, bus, 0.4, 0.3)
+    assert [t for t in bus.advertised if t.startswith(CONTROLLER + "/")] == [
+        f"{CONTROLLER}/odom"]
+    world.close()
+
+
 # --- cmd_vel's other cases -----------------------------------------------------------------
 
 @pytest.mark.parametrize("allow, publishers, moves", [(False, 2, False), (True, 2, True)])
@@ -571,8 +581,8 @@ def test_a_command_before_the_controller_runs_is_refused_and_stopping_brakes():
 
 def test_a_nan_command_is_ignored():
     """ASC:363-379 takes a NaN and sends it to the joints, which would wreck the physics;
-    sim_bridge ignores it, saying so (doc/ros_control.md, "Where sim_bridge differs on
-    purpose"), and the last command goes on."""
+    sim_bridge ignores it, saying so (doc/ros_control.md's AckermannSteeringController
+    table), and the last command goes on."""
     world, bus, _ = steer_bot()
     drive(bus, 0.3)
     drive(bus, math.nan, 0.2)
