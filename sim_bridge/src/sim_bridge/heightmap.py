@@ -212,20 +212,6 @@ class Heightmap:
         it centres itself between its lowest and highest."""
         return float(self.heights.min() + self.heights.max()) / 2.0
 
-    def height_at(self, x: float, y: float) -> float:
-        """The terrain's height at (x, y) in the collision's frame, bilinear within the cell
-        (what a point on the surface reads to within the cell's bend)."""
-        count = self.heights.shape[0]
-        column = (x + self.size[0] / 2) / self.size[0] * (count - 1)
-        row = (self.size[1] / 2 - y) / self.size[1] * (count - 1)
-        c0 = int(np.clip(np.floor(column), 0, count - 2))
-        r0 = int(np.clip(np.floor(row), 0, count - 2))
-        fc, fr = column - c0, row - r0
-        cell = self.heights[r0:r0 + 2, c0:c0 + 2]
-        top = cell[0, 0] * (1 - fc) + cell[0, 1] * fc
-        bottom = cell[1, 0] * (1 - fc) + cell[1, 1] * fc
-        return float(top * (1 - fr) + bottom * fr)
-
 
 def _vector(text: Optional[str], default: Sequence[float], what: str) -> Tuple[float, ...]:
     if text is None or not text.strip():

@@ -13,7 +13,8 @@ import numpy as np
 import pytest
 
 from sim_bridge.heightmap import grid_heights, image_levels, read_png, sampling_of
-from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec, load_world
+from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec, load_world, parse_model
+from sim_bridge.world import World
 from world_fixtures import run
 
 SIDE = 33  # pixels: 2^5 + 1
@@ -89,7 +90,6 @@ def world_file(folder, uri, size=SIZE, extra=""):
 @pytest.fixture
 def terrain(bus, tmp_path):
     """A world of the plateau terrain alone (no ground plane)."""
-    from sim_bridge.world import World
     write_png(tmp_path / "plateau.png", plateau_image())
     simulated = World(bus, ray_threads=1)
     simulated.load_world(load_world(world_file(tmp_path, "plateau.png"), warn=bus.warn))
@@ -199,7 +199,6 @@ def test_an_image_not_square_of_side_2n_plus_1_is_refused_with_gazebos_error(
         bus, tmp_path, shape):
     """HeightmapShape.cc:195-201: "Heightmap data size must be square, with a size of
     2^n+1"; the terrain is left out, the world loads (a ball dropped there falls)."""
-    from sim_bridge.world import World
     write_png(tmp_path / "bad.png", np.zeros(shape, dtype=np.uint8))
     messages = []
     spec = load_world(world_file(tmp_path, "bad.png"), warn=messages.append)
@@ -216,7 +215,6 @@ def test_an_image_not_square_of_side_2n_plus_1_is_refused_with_gazebos_error(
 
 def test_model_and_file_uris_are_found(bus, tmp_path, monkeypatch):
     """model://NAME/... through GAZEBO_MODEL_PATH, file:// with an absolute path."""
-    from sim_bridge.world import World
     textures = tmp_path / "models" / "hills" / "materials" / "textures"
     textures.mkdir(parents=True)
     write_png(textures / "plateau.png", plateau_image())
@@ -244,7 +242,6 @@ def test_pos_x_and_y_do_not_move_the_collision(bus, tmp_path):
     """ODE takes pos z alone (ODEHeightmapShape.cc:113-125); Gazebo draws the terrain
     shifted by pos x and y (gazebo/rendering/Heightmap.cc:565-572) and collides where ODE
     put it: the plateau stays at the image's top-left, and a warning says so."""
-    from sim_bridge.world import World
     write_png(tmp_path / "plateau.png", plateau_image())
     path = world_file(tmp_path, "plateau.png")
     with open(path) as stream:
@@ -259,3 +256,20 @@ def test_pos_x_and_y_do_not_move_the_collision(bus, tmp_path):
     distance = simulated.cast_rays((-4.5, 4.5, 5.0), np.array([[0.0, 0.0, -1.0]]), 0, 10)
     assert 5.0 - distance[0] == pytest.approx(HIGH_Z, abs=0.01)
     simulated.close()
+
+
+def test_a_spawned_terrain_model_is_static_without_saying_so(world, tmp_path):
+    """spawn_sdf_model's path: a model with a heightmap collision and no <static> stays
+    where it is, as Gazebo makes its link static (gazebo/physics/Link.cc:695-696); a ball
+    rests on it."""
+    write_png(tmp_path / "plateau.png", plateau_image())
+    model = parse_model(f"""<sdf version="1.6"><model name="hills"><pose>0 0 1 0 0 0</pose>
+      <link name="link"><collision name="c"><geometry><heightmap>
+        <uri>file://{tmp_path / 'plateau.png'}</uri><size>{' '.join(map(str, SIZE))}</size>
+      </heightmap></geometry></collision></link></model></sdf>""", "hills.sdf")
+    assert model.static
+    world.add_sdf_model(model)
+    drop_ball(world, "ball", -4.5, 4.5, 5.0)
+    run(world, 2.0)
+    assert world.pose("hills")[0] == pytest.approx((0, 0, 1))
+    assert world.pose("ball")[0][2] == pytest.approx(1 + SIZE[2] + BALL_RADIUS, abs=0.015)

@@ -15,6 +15,7 @@ inside a mesh's geometry), read as Gazebo 11 reads it:
 import pytest
 
 from sim_bridge.sdf_world import load_world
+from sim_bridge.world import World
 from urdf_tools.model import UrdfError, parse_urdf
 from world_fixtures import run
 
@@ -74,7 +75,6 @@ def test_a_material_before_the_shape_is_refused_as_urdfdom_refuses_it(cube):
 ])
 def test_an_sdf_geometrys_unknown_element_is_ignored_wherever_it_stands(
         bus, tmp_path, cube, before, after):
-    from sim_bridge.world import World
     geometry = f"<geometry>{before}<mesh><uri>file://{cube}</uri></mesh>{after}</geometry>"
     path = tmp_path / "crate.world"
     path.write_text(f"""<sdf version="1.6"><world name="w">
