@@ -24,6 +24,7 @@ from controller_manager_msgs.srv import (ListControllersRequest, LoadControllerR
 from geometry_msgs.msg import Twist
 
 from recording_bus import RecordingBus
+from sim_bridge.ros_control import INTERFACE_NAMES
 from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec
 from sim_bridge.world import World
 from world_fixtures import run
@@ -431,8 +432,8 @@ def test_the_manager_lists_the_type_and_its_claims_on_two_interfaces():
     state, = bus.services[f"{MANAGER}/list_controllers"](ListControllersRequest()).controller
     assert state.type == TYPE
     assert [(r.hardware_interface, list(r.resources)) for r in state.claimed_resources] == [
-        ("hardware_interface/PositionJointInterface", ["front_steer_joint"]),
-        ("hardware_interface/VelocityJointInterface", ["rear_wheel_joint"])]
+        (INTERFACE_NAMES["position"], ["front_steer_joint"]),
+        (INTERFACE_NAMES["velocity"], ["rear_wheel_joint"])]
     world.close()
 
 
