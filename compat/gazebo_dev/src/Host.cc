@@ -74,7 +74,19 @@ void *OpenPluginLibrary(const std::string &_filename, std::string &_fullname,
       }
     }
   }
-  void *handle = dlopen(_fullname.c_str(), RTLD_LAZY | RTLD_GLOBAL);
+  // Gazebo opens plugins RTLD_LAZY | RTLD_GLOBAL (Gazebo 11.10.2 gazebo/common/Plugin.hh:152):
+  // a symbol nothing defines is found missing only when it is called, and then the process
+  // ends with "symbol lookup error". Binding everything first names it before that happens.
+  void *handle = dlopen(_fullname.c_str(), RTLD_NOW | RTLD_GLOBAL);
+  if (!handle)
+  {
+    const char *nowError = dlerror();
+    const std::string unbound = nowError ? nowError : "";
+    handle = dlopen(_fullname.c_str(), RTLD_LAZY | RTLD_GLOBAL);
+    if (handle)
+      gzwarn << unbound << ": loaded as Gazebo loads it (lazily); the simulator stops when "
+             << "the plugin calls it (link the library that defines it)\n";
+  }
   if (!handle)
   {
     const char *error = dlerror();
@@ -165,6 +177,11 @@ gazebo::physics::ModelPtr Host::Model(const std::string &_name)
   this->models[_name] = model;
   // its sensors, before any of its plugins loads (Gazebo's Model::LoadPlugins waits for them)
   const std::string world = this->GetBackend()->WorldName();
+  {
+    // kept for the per-step UpdateInfo: a call into the backend costs a Python call
+    std::lock_guard<std::recursive_mutex> lock(this->mutex);
+    this->worldName = world;
+  }
   for (const auto &sensor : this->GetBackend()->Sensors(_name))
   {
     gazebo::sensors::SensorPtr made;
@@ -392,7 +409,10 @@ void Host::WorldUpdateBegin(int64_t _simTimeNs)
     ++this->iterations;
   }
   gazebo::common::UpdateInfo info;
-  info.worldName = this->GetBackend()->WorldName();
+  {
+    std::lock_guard<std::recursive_mutex> lock(this->mutex);
+    info.worldName = this->worldName;
+  }
   info.simTime = this->World()->SimTime();
   info.realTime = gazebo::common::Time::GetWallTime();
   gazebo::event::Events::worldUpdateBegin(info);

@@ -12,6 +12,7 @@
 
 #include <map>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -126,11 +127,23 @@ sdf::ElementPtr PluginElement(const std::string &_parentTag, const std::string &
   return plugin;
 }
 
-// Gazebo's process has roscpp and the plugin API in its global symbol scope (it dlopens
-// gazebo_ros's plugins RTLD_GLOBAL); plugins that leave those symbols to the host rely on it
+// Gazebo's process has the plugin API, and once gazebo_ros's API plugin is loaded roscpp,
+// roslib and tf, in its global symbol scope (it dlopens plugins RTLD_GLOBAL); plugins that
+// leave those symbols to the host rely on it (AgileX LIMO's drive uses tf's
+// TransformBroadcaster and links only tf2_ros)
 void PromoteToGlobal(const char *_library)
 {
   dlopen(_library, RTLD_LAZY | RTLD_NOLOAD | RTLD_GLOBAL);
+}
+
+// the ':'-separated library files given, opened into the global scope
+void OpenGlobally(const std::string &_files)
+{
+  std::istringstream stream(_files);
+  std::string file;
+  while (std::getline(stream, file, ':'))
+    if (!file.empty() && !dlopen(file.c_str(), RTLD_LAZY | RTLD_GLOBAL))
+      gzwarn << "sim_bridge's plugin host: " << dlerror() << "\n";
 }
 
 bool InitRos(const std::string &_nodeName)
@@ -161,6 +174,7 @@ PYBIND11_MODULE(_gazebo_host, m)
 {
   PromoteToGlobal("libgazebo_compat.so");
   PromoteToGlobal("libroscpp.so");
+  OpenGlobally(GAZEBO_ROS_API_PLUGIN_SCOPE);
 
   py::class_<JointInfo>(m, "JointInfo")
       .def(py::init<>())

@@ -430,3 +430,27 @@ def test_set_linear_vel_keeps_the_spin_and_sets_the_frames_velocity(plugin_world
     linear, angular = world.twist("spinner")
     assert list(angular) == pytest.approx([0, 0, -0.5], abs=1e-9)
     assert list(linear) == pytest.approx([0.4, -0.1, 0.0], abs=1e-9)
+
+
+def test_a_plugin_finds_what_gzserver_has_loaded_and_an_unbound_symbol_is_named(
+        plugin_world, plugin_dir, capfd):
+    """The host's process has what gazebo_ros's API plugin brings into gzserver (roscpp,
+    roslib, tf): a plugin calling tf::resolve without linking tf loads and runs (before: the
+    simulator ended with 'symbol lookup error'). A symbol nothing defines is named when the
+    plugin loads, and the plugin loads lazily as Gazebo loads it, so a path that never
+    calls it runs."""
+    world, bus = plugin_world
+    path = os.path.join(plugin_dir, "scoped.world")
+    with open(path, "w") as stream:
+        stream.write(_box_with_plugins(("scope", "libhost_scope_plugin.so"))
+                     .replace("<joint>left_wheel_joint</joint>",
+                              "<prefix>robot1</prefix><frame>/base_link</frame>"))
+    world.load_world(load_world(path))
+    assert bus.warnings == []
+    library = ctypes.CDLL(os.path.join(plugin_dir, "libhost_scope_plugin.so"))
+    library.host_scope_plugin_report.restype = ctypes.c_char_p
+    # tf/src/tf.cpp:159-185: a leading '/' is taken as already resolved
+    assert library.host_scope_plugin_report() == b"base_link"
+    log = capfd.readouterr().err
+    assert "libhost_scope_plugin.so: undefined symbol: sim_bridge_test_defined_nowhere" in log
+    assert "loaded as Gazebo loads it (lazily)" in log

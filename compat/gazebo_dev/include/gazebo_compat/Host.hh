@@ -68,6 +68,8 @@ namespace gazebo_compat
     private: std::vector<std::pair<std::string, gazebo::SensorPlugin::TPtr>> sensorPlugins;
     private: int64_t simTimeNs = 0;
     private: uint32_t iterations = 0;
+    // the world's name as the backend gave it when the last model was added
+    private: std::string worldName;
   };
 }
 #endif
