@@ -13,7 +13,8 @@ template <class T>
 class RealtimeBox
 {
 public:
-  explicit RealtimeBox(const T& initial = T()) : value_(initial)
+  // implicit, as upstream's
+  RealtimeBox(const T& initial = T()) : value_(initial)  // NOLINT(runtime/explicit)
   {
   }
 

@@ -22,7 +22,9 @@ public:
   }
 
   // for types without a default constructor: both copies start as data
-  explicit RealtimeBuffer(const T& data) : realtime_data_(new T(data)), non_realtime_data_(new T(data))
+  // implicit, as upstream's
+  RealtimeBuffer(const T& data)  // NOLINT(runtime/explicit)
+    : realtime_data_(new T(data)), non_realtime_data_(new T(data))
   {
   }
 

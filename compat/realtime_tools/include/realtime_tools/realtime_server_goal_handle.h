@@ -38,8 +38,10 @@ public:
   ResultPtr preallocated_result_;
   FeedbackPtr preallocated_feedback_;
 
-  explicit RealtimeServerGoalHandle(GoalHandle& gh, const ResultPtr& preallocated_result = ResultPtr(),
-                                    const FeedbackPtr& preallocated_feedback = FeedbackPtr())
+  // implicit, as upstream's
+  RealtimeServerGoalHandle(GoalHandle& gh,  // NOLINT(runtime/explicit)
+                           const ResultPtr& preallocated_result = ResultPtr(),
+                           const FeedbackPtr& preallocated_feedback = FeedbackPtr())
     : gh_(gh), preallocated_result_(preallocated_result), preallocated_feedback_(preallocated_feedback)
   {
     if (!preallocated_result_)
