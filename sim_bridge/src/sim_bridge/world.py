@@ -81,6 +81,16 @@ MIN_UPDATE_RATE = 1.0
 # would stand still. ROS time's seconds are unsigned 32-bit: a longer step than this (s)
 # cannot be put on /clock even once.
 MAX_TIME_STEP = float(2 ** 32 - 1)
+# The longest step pybullet takes: a world's longer <max_step_size> (Gazebo's step: plugins,
+# controllers and the clock keep it) is stepped by pybullet in equal parts no longer than
+# this, the step's forces and motor targets held through them, as ODE holds them through
+# its step. Above about 5 ms pybullet's joint motors let go under load where ODE's hold:
+# AgileX LIMO (ugv_gazebo_sim, a 10 ms world), its wheels held at speed by its drive
+# plugin's motors against gazebo_ros_control's velocity PID, got 3.7 of the 6.7 N m its
+# motors had to give at 10 ms and flipped over; all of it at 5 ms, in pybullet alone too.
+MAX_PHYSICS_STEP = 0.005
+# at most this many parts (a step of 0.5 s; a longer one is stepped in parts this many)
+MAX_PHYSICS_PARTS = 100
 
 
 @dataclass(frozen=True)
@@ -383,6 +393,10 @@ class World:
     def _configure_physics(self) -> None:
         pb.setGravity(*self.gravity, physicsClientId=self.client)
         pb.setTimeStep(self.step_size, physicsClientId=self.client)
+        # (numSubSteps 0 and 1 are both one step)
+        parts = min(math.ceil(self.step_size / MAX_PHYSICS_STEP - 1e-9), MAX_PHYSICS_PARTS)
+        pb.setPhysicsEngineParameter(numSubSteps=parts if parts > 1 else 0,
+                                     physicsClientId=self.client)
         self._step_ns = int(round(self.step_size * 1e9))
         # Friction as a pyramid, as Gazebo's ODE. A robot's (multibody's) contacts get it
         # on the world's axes whatever this says, so tyres get theirs from
