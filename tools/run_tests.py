@@ -90,8 +90,10 @@ class Tally:
 
 
 # Where packages live: the top level (the course solutions, the simulator), compat/ (the
-# Gazebo stack's names) and courses/ (course environments).
-PACKAGE_DIRS = ("*", os.path.join("compat", "*"), os.path.join("courses", "*"))
+# Gazebo stack's names), courses/ (course environments) and test/packages/ (packages written
+# as robot packages' authors write theirs, with their own tests).
+PACKAGE_DIRS = ("*", os.path.join("compat", "*"), os.path.join("courses", "*"),
+                os.path.join("test", "packages", "*"))
 
 
 def packages() -> List[str]:

@@ -201,4 +201,4 @@ class RobotPackageDeps(unittest.TestCase):
                       run.stdout)
 
 if __name__ == "__main__":
-    rostest.rosrun("control_toolbox", "robot_package_deps", RobotPackageDeps)
+    rostest.rosrun("limo_style_deps", "robot_package_deps", RobotPackageDeps)
