@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 
-from sim_bridge.ros_control.diff_drive_odometry import MIN_VELOCITY_INTERVAL, Odometry
+from sim_bridge.ros_control.diff_drive_odometry import Odometry
 
 
 class AckermannOdometry(Odometry):
@@ -38,11 +38,4 @@ class AckermannOdometry(Odometry):
         linear = rear - self._rear_old
         self._rear_old = rear
         angular = math.tan(steer_position) * linear / self.separation_h
-        self._integrate(linear, angular)
-        dt = (now_ns - self._stamp_ns) * 1e-9
-        if dt < MIN_VELOCITY_INTERVAL:
-            return False
-        self._stamp_ns = now_ns
-        self.linear = self._linear_mean.add(linear / dt)
-        self.angular = self._angular_mean.add(angular / dt)
-        return True
+        return self._advance(linear, angular, now_ns)

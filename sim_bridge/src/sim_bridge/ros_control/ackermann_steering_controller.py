@@ -28,11 +28,10 @@ from __future__ import annotations
 
 import math
 
-from geometry_msgs.msg import TransformStamped, Twist
+from geometry_msgs.msg import Twist
 from nav_msgs.msg import Odometry as OdometryMessage
 
-from sim_bridge.plugins.base import PluginError, stamp
-from sim_bridge.poses import quaternion_from_rpy
+from sim_bridge.plugins.base import PluginError
 from sim_bridge.ros_control.ackermann_odometry import AckermannOdometry
 from sim_bridge.ros_control.controller_base import Controller
 from sim_bridge.ros_control.diff_drive_controller import (DEFAULT_CMD_VEL_TIMEOUT,
@@ -69,6 +68,9 @@ class AckermannSteeringController(Controller):
     # the covariance diagonals as DDC:689-728 do (their ROS_ASSERTs compiled out alike)
     _limiter = DiffDriveController._limiter
     _diagonal = DiffDriveController._diagonal
+    # and odom and its transform published as DDC:358-389 do (ASC:283-308, the message's
+    # constant fields as setOdomPubFields sets them, :486-512)
+    _publish = DiffDriveController._publish
 
     def __init__(self, name, params, hardware, io):
         super().__init__(name, params, hardware, io)
@@ -254,32 +256,6 @@ class AckermannSteeringController(Controller):
         self._last1, self._last0 = self._last0, (linear, angle)
         self.hardware.joints[self.rear].command = linear / self.radius  # :333-334
         self.hardware.joints[self.steer].command = angle  # :335
-
-    # --- publishing ---------------------------------------------------------------------
-    def _publish(self, now_ns):
-        """ASC:283-308, the message's constant fields as setOdomPubFields sets them
-        (:486-512)."""
-        odometry = self.odometry
-        message = OdometryMessage()
-        message.header.stamp = stamp(now_ns)
-        message.header.frame_id = self.odom_frame
-        message.child_frame_id = self.base_frame
-        message.pose.pose.position.x, message.pose.pose.position.y = odometry.x, odometry.y
-        q = message.pose.pose.orientation
-        q.x, q.y, q.z, q.w = quaternion_from_rpy(0.0, 0.0, odometry.heading)
-        message.twist.twist.linear.x = odometry.linear
-        message.twist.twist.angular.z = odometry.angular
-        message.pose.covariance = self.pose_covariance
-        message.twist.covariance = self.twist_covariance
-        self.odom_out.publish(message)
-        if self.publish_tf:
-            transform = TransformStamped()
-            transform.header = message.header
-            transform.child_frame_id = self.base_frame
-            transform.transform.translation.x = odometry.x
-            transform.transform.translation.y = odometry.y
-            transform.transform.rotation = message.pose.pose.orientation
-            self.io.bus.send_transforms([transform])
 
     def close(self):
         self._subscription.unregister()

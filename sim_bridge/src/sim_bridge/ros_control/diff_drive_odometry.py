@@ -71,6 +71,11 @@ class Odometry:
         self._left_old, self._right_old = left, right
         linear = (right_step + left_step) * 0.5
         angular = (right_step - left_step) / self.separation
+        return self._advance(linear, angular, now_ns)
+
+    def _advance(self, linear: float, angular: float, now_ns: int) -> bool:
+        """A step's travel (m) and turn (rad) integrated first; then a velocity estimate
+        into the rolling means, only when at least 0.1 ms has passed (odometry.cpp:80-99)."""
         self._integrate(linear, angular)
         dt = (now_ns - self._stamp_ns) * 1e-9
         if dt < MIN_VELOCITY_INTERVAL:
