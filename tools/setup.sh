@@ -59,6 +59,7 @@ apt_packages=(
   libsdformat-dev libignition-math-dev pybind11-dev python3-dev
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure cpplint
   python3-pycodestyle libtinyxml-dev
+  libeigen-stl-containers-dev
 )
 missing=()
 for pkg in "${apt_packages[@]}"; do
