@@ -32,7 +32,8 @@ check_platform
 # (compat/gazebo_dev: the real sdformat 12 and ignition-math6) and sim_bridge's plugin host
 # (a pybind11 module); what robot packages' other build dependencies stand on: Debian's
 # dynamic_reconfigure (.cfg generation, dynparam, the C++ and Python servers), the linters
-# compat/roslint runs (cpplint, pycodestyle), TinyXML (compat/control_toolbox's Pid::initXml).
+# compat/roslint runs (cpplint, pycodestyle), TinyXML (compat/control_toolbox's Pid::initXml),
+# TinyXML2 (the SRDF reader of compat/moveit_core's C++ side) and googletest (its gtests).
 apt_packages=(
   catkin catkin-lint python3-catkin-pkg ros-message-generation ros-message-runtime
   python3-genpy python3-genmsg cmake make g++
@@ -58,7 +59,7 @@ apt_packages=(
   python3-venv python3-pip
   libsdformat-dev libignition-math-dev pybind11-dev python3-dev
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure cpplint
-  python3-pycodestyle libtinyxml-dev
+  python3-pycodestyle libtinyxml-dev libtinyxml2-dev libgtest-dev googletest
   libeigen-stl-containers-dev
 )
 missing=()
