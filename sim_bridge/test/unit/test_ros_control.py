@@ -372,6 +372,10 @@ def test_manager_refuses_what_it_cannot_do_and_lists_the_rest():
     assert [(c.name, c.state, c.type) for c in listed] == [
         ("arm_controller", "running", "position_controllers/JointTrajectoryController")]
     assert listed[0].claimed_resources[0].resources == ["pan", "lift"]
+    # the interface by its demangled C++ type, as controller_manager lists it
+    # (controller_interface/controller.h:124, :136)
+    assert listed[0].claimed_resources[0].hardware_interface == \
+        "hardware_interface::PositionJointInterface"
     world.close()
 
 

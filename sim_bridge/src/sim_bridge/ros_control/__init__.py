@@ -83,9 +83,11 @@ UNREGISTERED_INTERFACES = {
     "pos_vel_acc_controllers/JointTrajectoryController":
         "hardware_interface::PosVelAccJointInterface",
 }
-INTERFACE_NAMES = {"position": "hardware_interface/PositionJointInterface",
-                   "velocity": "hardware_interface/VelocityJointInterface",
-                   "effort": "hardware_interface/EffortJointInterface"}
+# list_controllers' claimed_resources name an interface by its C++ type, demangled
+# (controller_interface/controller.h:124, :136; hardware_interface/internal/demangle_symbol.h)
+INTERFACE_NAMES = {"position": "hardware_interface::PositionJointInterface",
+                   "velocity": "hardware_interface::VelocityJointInterface",
+                   "effort": "hardware_interface::EffortJointInterface"}
 
 
 @dataclass
