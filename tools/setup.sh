@@ -33,7 +33,8 @@ check_platform
 # (a pybind11 module); what robot packages' other build dependencies stand on: Debian's
 # dynamic_reconfigure (.cfg generation, dynparam, the C++ and Python servers), the linters
 # compat/roslint runs (cpplint, pycodestyle), TinyXML (compat/control_toolbox's Pid::initXml),
-# TinyXML2 (the SRDF reader of compat/moveit_core's C++ side) and googletest (its gtests).
+# TinyXML2 (the SRDF reader of compat/moveit_core's C++ side), googletest (its gtests) and
+# random_numbers (the generator MoveIt's RobotState signatures name).
 apt_packages=(
   catkin catkin-lint python3-catkin-pkg ros-message-generation ros-message-runtime
   python3-genpy python3-genmsg cmake make g++
@@ -59,7 +60,7 @@ apt_packages=(
   python3-venv python3-pip
   libsdformat-dev libignition-math-dev pybind11-dev python3-dev
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure cpplint
-  python3-pycodestyle libtinyxml-dev libtinyxml2-dev libgtest-dev googletest
+  python3-pycodestyle libtinyxml-dev libtinyxml2-dev libgtest-dev googletest librandom-numbers-dev
   libeigen-stl-containers-dev
 )
 missing=()
