@@ -1,3 +1,81 @@
-// MoveIt's C++ RobotModelLoader is not provided by this workspace: MoveIt's C++ libraries are not installable on
-// this platform, and compat/ stands in for MoveIt's ROS interfaces in Python.
-#error "MoveIt's C++ RobotModelLoader is not provided here (compat/, MoveIt's names in Python): use moveit_commander (Python), or move_group's compute_fk and compute_ik services from C++"
+// robot_model_loader::RobotModelLoader (MoveIt noetic-devel moveit_ros/planning/robot_model_loader/include/moveit/
+// robot_model_loader/robot_model_loader.h), the workspace's own implementation.
+//
+// Provided: the model from the parameter server: the URDF from <robot_description>, the SRDF from
+// <robot_description>_semantic (both searched as MoveIt's rdf_loader searches them: ros::NodeHandle::searchParam from
+// the node's private namespace), joint limits from <robot_description>_planning/joint_limits/<joint>/
+// {has_,}{max_velocity,max_acceleration,min_position,max_position}, as robot_model_loader.cpp (l. 130-198) applies
+// them; or from URDF and SRDF strings (Options). getModel(), getRobotDescription(), getURDF(), getSRDF().
+// An absent or unparsable URDF gives a ROS error naming its parameter and a null getModel(); an absent or unparsable
+// SRDF gives a ROS error naming its parameter and a model without groups, as MoveIt builds it then
+// (robot_model_loader.cpp l. 98-103).
+// Not provided: kinematics plugin loading (load_kinematics_solvers_ is accepted; groups keep no solver, and
+// RobotState::setFromIK uses the workspace's KDL solver), getRDFLoader(), getKinematicsPluginLoader(),
+// loadKinematicsSolvers(): moveit/rdf_loader and moveit/kinematics_plugin_loader are not here.
+#pragma once
+
+#include <string>
+
+#include <moveit/macros/class_forward.h>
+#include <moveit/robot_model/robot_model.h>
+#include <srdfdom/model.h>
+#include <urdf_model/model.h>
+
+namespace robot_model_loader
+{
+MOVEIT_CLASS_FORWARD(RobotModelLoader);
+
+class RobotModelLoader
+{
+public:
+  struct Options
+  {
+    Options(const std::string& robot_description = "robot_description")
+      : robot_description_(robot_description), load_kinematics_solvers_(true)
+    {
+    }
+    Options(const std::string& urdf_string, const std::string& srdf_string)
+      : urdf_string_(urdf_string), srdf_string_(srdf_string), load_kinematics_solvers_(true)
+    {
+    }
+
+    /// The parameter holding the URDF; "<name>_semantic" holds the SRDF, "<name>_planning" the joint limits
+    std::string robot_description_;
+    /// Documents given directly (used when robot_description_ is empty)
+    std::string urdf_string_, srdf_string_;
+    bool load_kinematics_solvers_;
+  };
+
+  RobotModelLoader(const Options& opt = Options());
+  RobotModelLoader(const std::string& robot_description, bool load_kinematics_solvers = true);
+  ~RobotModelLoader();
+
+  /// The model; null when it could not be built (the reason was logged)
+  const moveit::core::RobotModelPtr& getModel() const
+  {
+    return model_;
+  }
+  const std::string& getRobotDescription() const
+  {
+    return robot_description_;
+  }
+  const urdf::ModelInterfaceSharedPtr& getURDF() const
+  {
+    return urdf_;
+  }
+  const srdf::ModelSharedPtr& getSRDF() const
+  {
+    return srdf_;
+  }
+
+private:
+  void configure(const Options& opt);
+  /// robot_description_planning's joint limits onto the model's joints
+  void applyPlanningJointLimits(const std::string& planning_namespace);
+
+  moveit::core::RobotModelPtr model_;
+  std::string robot_description_;
+  urdf::ModelInterfaceSharedPtr urdf_;
+  srdf::ModelSharedPtr srdf_;
+};
+}  // namespace robot_model_loader

@@ -1,0 +1,3 @@
+// MoveIt's PlanarJointModel subclass is not provided here: compat/moveit_core has one concrete moveit::core::JointModel
+// for every joint type (getType() == JointModel::PLANAR; getAxis() and isContinuous() on it).
+#error "moveit/robot_model/planar_joint_model.h (PlanarJointModel) is not provided by compat/moveit_core: use moveit::core::JointModel from moveit/robot_model/joint_model.h and its getType()"
