@@ -132,12 +132,14 @@ bool RemoteControl::waitUntil(const std::string& caption, const std::function<bo
 
   std::cout << std::endl
             << CONSOLE_CYAN << "Waiting to continue: " << caption << CONSOLE_RESET << std::flush;
+  // Waiting before the waiting state is shown (upstream shows it first, l. 150-155): a "next"
+  // sent as soon as it shows is not dropped
+  is_waiting_ = true;
   if (displayWaitingState_)
   {
     displayWaitingState_(true);
   }
 
-  is_waiting_ = true;
   while (!released() && ros::ok())
   {
     ros::Duration(WAIT_POLL_PERIOD).sleep();
