@@ -2,7 +2,8 @@
 px100 (test/fixtures/moveit_ws: six_axis_arm_description, six_axis_arm_moveit_config with
 Noetic's layout (planning_pipelines, pass_all_args, $(dirname)), and six_axis_arm_demo, a
 package whose CMakeLists finds moveit_commander, moveit_core, moveit_ros_planning and
-moveit_ros_planning_interface and whose script follows MoveIt's Python tutorial). Built on
+moveit_ros_planning_interface, whose script follows MoveIt's Python tutorial and whose C++
+node, on MoveGroupInterface and PlanningSceneInterface, follows its C++ tutorial). Built on
 top of this workspace as a user's own; ``roslaunch six_axis_arm_moveit_config demo.launch``
 with fake controllers; every target checked by the URDF's kinematics (urdf_tools, apart
 from move_group's) at the joint positions /joint_states reports: <= 1 mm, <= 0.01 rad."""
@@ -29,6 +30,9 @@ READY = [0.0, 0.4, 0.8, 0.3, 0.5, 0.0]   # not the wrist's singular 0 (Cartesian
 START_LIMIT = 60.0
 RUN_LIMIT = 240.0
 PLANNING_FAILED = -1      # MoveIt's answer to a goal inside a box (every failed solve)
+SUCCESS = 1               # moveit_msgs/MoveItErrorCodes
+METRES, RADIANS = 0.001, 0.01   # how close a reached target must be
+SAME_FK = 1e-6            # the C++ RobotState's forward kinematics against urdf_tools'
 
 
 @pytest.fixture(scope="module")
@@ -58,6 +62,80 @@ def pose_errors(urdf, joints, goal):
     return float(np.linalg.norm(reached[:3, 3] - goal[:3])), angle
 
 
+def pose_matrix(pose):
+    """4x4 of [x y z qx qy qz qw]."""
+    matrix = quaternion_matrix(pose[3:])
+    matrix[:3, 3] = pose[:3]
+    return matrix
+
+
+def matrix_errors(reached, wanted):
+    """(metres, radians) between two 4x4 poses."""
+    turn = reached[:3, :3].T @ wanted[:3, :3]
+    angle = math.acos(max(-1.0, min(1.0, (np.trace(turn) - 1) / 2)))
+    return float(np.linalg.norm(reached[:3, 3] - wanted[:3, 3])), angle
+
+
+def run_steps(command, env, log_path):
+    """Runs a demo node; its JSON lines by step."""
+    run = subprocess.run(["rosrun", "six_axis_arm_demo", command], env=env,
+                         capture_output=True, text=True, timeout=RUN_LIMIT, check=False)
+    with open(log_path, "w", encoding="utf-8") as log:
+        log.write(run.stdout + run.stderr)
+    assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-3000:]
+    return {s["step"]: s for s in (json.loads(line) for line in run.stdout.splitlines()
+                                   if line.startswith("{"))}
+
+
+def check_cpp_steps(urdf, steps):
+    """The C++ tutorial's steps (move_group_interface_demo.cpp), each against the URDF's own
+    kinematics at the joints /joint_states reported after it."""
+    assert steps["info"]["frame"] == "world" and steps["info"]["eef"] == "tool0"
+    assert steps["info"]["groups"] == ["manipulator"]
+    assert set(steps["info"]["named"]) == {"home", "ready"}
+    assert steps["info"]["variables"] == JOINTS
+    # the Python script's box was removed through apply_planning_scene
+    assert steps["cleared"]["ok"] and steps["cleared"]["objects"] == []
+
+    assert steps["named"]["ok"]
+    np.testing.assert_allclose(steps["named"]["joints"], READY, atol=RADIANS)
+
+    pose = steps["pose"]
+    assert pose["ok"] and pose["planned"] and pose["points"] >= 2, pose
+    # the goal is RobotState's forward kinematics of the source joints: urdf_tools agrees
+    metres, radians = pose_errors(urdf, pose["source"], np.array(pose["goal"]))
+    assert metres <= SAME_FK and radians <= SAME_FK, (metres, radians)
+    metres, radians = pose_errors(urdf, pose["joints"], np.array(pose["goal"]))
+    assert metres <= METRES and radians <= RADIANS, (metres, radians)
+
+    joint = steps["joint"]
+    assert joint["ok"] and joint["accepted"] and joint["short_refused"], joint
+    np.testing.assert_allclose(joint["joints"], joint["goal"], atol=RADIANS)
+
+    cartesian = steps["cartesian"]
+    assert cartesian["ok"] and cartesian["code"] == SUCCESS, cartesian
+    assert cartesian["fraction"] == pytest.approx(1.0)
+    metres, radians = pose_errors(urdf, cartesian["joints"], np.array(cartesian["goal"]))
+    assert metres <= METRES and radians <= RADIANS, (metres, radians)
+
+    attached = steps["attached"]
+    assert attached["ok"] and attached["unknown_refused"] and attached["link"] == "tool0"
+    assert "carried_box" in attached["world_after_add"]
+    assert "carried_box" not in attached["world_after_attach"]
+    # carried: after the move and the detach, the box keeps its place relative to the tool
+    detached = steps["detached"]
+    assert detached["ok"], detached
+    np.testing.assert_allclose(detached["joints"], detached["goal"], atol=RADIANS)
+    offset = np.linalg.inv(tool_pose(urdf, attached["joints"])) @ pose_matrix(attached["box"])
+    expected = tool_pose(urdf, detached["joints"]) @ offset
+    metres, radians = matrix_errors(pose_matrix(detached["box"]), expected)
+    assert metres <= METRES and radians <= RADIANS, (metres, radians)
+    # and it moved with the arm (far more than the tolerance)
+    assert np.linalg.norm(np.array(detached["box"][:3]) - attached["box"][:3]) > 100 * METRES
+
+    assert steps["removed"]["ok"] and steps["removed"]["objects"] == []
+
+
 def test_a_setup_assistant_config_runs_the_tutorials_steps(overlay, ros_env, results_dir):
     workspace, overlay_env = overlay
     env = dict(overlay_env, ROS_MASTER_URI=ros_env["ROS_MASTER_URI"], ROS_HOME=ros_env["ROS_HOME"])
@@ -70,13 +148,10 @@ def test_a_setup_assistant_config_runs_the_tutorials_steps(overlay, ros_env, res
             assert launch.running(), launch.output()[-3000:]
             return "You can start planning now!" in launch.output()
         headless.wait_until(up, START_LIMIT, "move_group")
-        run = subprocess.run(["rosrun", "six_axis_arm_demo", "demo_mover.py"], env=env,
-                             capture_output=True, text=True, timeout=RUN_LIMIT, check=False)
-        with open(os.path.join(results_dir, "demo_mover.log"), "w", encoding="utf-8") as log:
-            log.write(run.stdout + run.stderr)
-        assert run.returncode == 0, run.stdout[-2000:] + run.stderr[-3000:]
-    steps = {s["step"]: s for s in (json.loads(line) for line in run.stdout.splitlines()
-                                    if line.startswith("{"))}
+        steps = run_steps("demo_mover.py", env, os.path.join(results_dir, "demo_mover.log"))
+        # the C++ tutorial's steps on the same move_group, after the Python ones
+        cpp_steps = run_steps("move_group_interface_demo", env,
+                              os.path.join(results_dir, "move_group_interface_demo.log"))
     assert steps["info"] == {"step": "info", "frame": "world", "eef": "tool0",
                              "groups": ["manipulator"]}
     assert steps["named"]["ok"]
@@ -92,6 +167,7 @@ def test_a_setup_assistant_config_runs_the_tutorials_steps(overlay, ros_env, res
     assert metres <= 0.001 and radians <= 0.01, (metres, radians)
     assert not steps["blocked"]["ok"] and steps["blocked"]["code"] == PLANNING_FAILED
     assert steps["blocked"]["objects"] == ["box"]
+    check_cpp_steps(urdf, cpp_steps)
 
 
 # MoveIt's goal state colour (Goal State Color 250; 128; 0 in the config), lit: the

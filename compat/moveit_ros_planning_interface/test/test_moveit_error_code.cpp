@@ -1,5 +1,6 @@
 // moveit::core::MoveItErrorCode as MoveIt's (moveit_error_code.h, noetic-devel 7c0343f0): true only for SUCCESS,
-// compares with codes, prints the code's name; planning_interface::MoveItErrorCode is the same class.
+// compares with codes, prints the code's name; planning_interface::MoveItErrorCode is the same class. Linked into
+// the rostest's checking node (test/rostest/move_group_interface_check.cpp), whose main runs them.
 #include <sstream>
 #include <string>
 
@@ -52,10 +53,4 @@ TEST(MoveItErrorCode, OldNameIsTheSameClass)
   EXPECT_TRUE(static_cast<bool>(code));
   // a Plan starts empty
   EXPECT_TRUE(moveit::planning_interface::MoveGroupInterface::Plan().trajectory_.joint_trajectory.points.empty());
-}
-
-int main(int argc, char** argv)
-{
-  testing::InitGoogleTest(&argc, argv);
-  return RUN_ALL_TESTS();
 }
