@@ -186,7 +186,7 @@ public:
   virtual const std::vector<std::string>& getJointNames() const = 0;
   virtual const std::vector<std::string>& getLinkNames() const = 0;
 
-  /// Whether this solver can serve the group: by default a chain whose tip is one of the group's links
+  /// Whether this solver can serve the group: by default, when the group is a chain
   virtual bool supportsGroup(const moveit::core::JointModelGroup* jmg, std::string* error_text_out = nullptr) const;
 
   /// The same step for every redundant joint
