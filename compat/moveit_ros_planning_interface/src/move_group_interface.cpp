@@ -37,6 +37,12 @@ namespace moveit
 namespace planning_interface
 {
 const std::string MoveGroupInterface::ROBOT_DESCRIPTION = "robot_description";  // NOLINT
+// defined here too: before C++17 a constant bound to a reference (ros::NodeHandle::param's default) needs a definition
+constexpr double MoveGroupInterface::DEFAULT_GOAL_JOINT_TOLERANCE;
+constexpr double MoveGroupInterface::DEFAULT_GOAL_POSITION_TOLERANCE;
+constexpr double MoveGroupInterface::DEFAULT_GOAL_ORIENTATION_TOLERANCE;
+constexpr double MoveGroupInterface::DEFAULT_ALLOWED_PLANNING_TIME;
+constexpr int MoveGroupInterface::DEFAULT_NUM_PLANNING_ATTEMPTS;
 
 namespace
 {
@@ -77,16 +83,21 @@ enum ActiveTargetType
 
 std::shared_ptr<tf2_ros::Buffer> sharedTF()
 {
-  // one buffer and listener for every interface made without a buffer, as upstream's getSharedTF
+  // one buffer and listener for every interface made without a buffer, as upstream's getSharedTF; the listener lives
+  // exactly as long as the buffer it fills
+  struct BufferAndListener
+  {
+    tf2_ros::Buffer buffer;
+    tf2_ros::TransformListener listener{ buffer };
+  };
   static std::mutex mutex;
   static std::weak_ptr<tf2_ros::Buffer> shared;
-  static std::unique_ptr<tf2_ros::TransformListener> listener;
   std::lock_guard<std::mutex> lock(mutex);
   std::shared_ptr<tf2_ros::Buffer> buffer = shared.lock();
   if (!buffer)
   {
-    buffer = std::make_shared<tf2_ros::Buffer>();
-    listener = std::make_unique<tf2_ros::TransformListener>(*buffer);
+    auto both = std::make_shared<BufferAndListener>();
+    buffer = std::shared_ptr<tf2_ros::Buffer>(both, &both->buffer);
     shared = buffer;
   }
   return buffer;
