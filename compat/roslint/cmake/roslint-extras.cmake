@@ -2,12 +2,18 @@
 # cmake/roslint-extras.cmake.em): every package that finds roslint gets them. Each linter
 # call adds a POST_BUILD command to the target roslint_<package>, which the target roslint
 # depends on; `make roslint_<package>` lints, and fails when a linter reports anything.
-# (roslint's macros run the linters from the devel/install space's Python package
-# `roslint`, so ${CATKIN_ENV} puts it on the path, as upstream's do.)
+# The linters run from the devel/install space's Python package `roslint`. Upstream's rely
+# on ${CATKIN_ENV}'s PYTHONPATH, which is the one of the workspace's first configure: with
+# /opt/ros sourced it holds roslint; here a fresh workspace's first configure has none, so
+# the commands name roslint's Python folder themselves.
 if(_ROSLINT_EXTRAS_INCLUDED_)
   return()
 endif()
 set(_ROSLINT_EXTRAS_INCLUDED_ TRUE)
+get_filename_component(_ROSLINT_PYTHONPATH
+  "${roslint_DIR}/../../../${CATKIN_GLOBAL_PYTHON_DESTINATION}" ABSOLUTE)
+set(_ROSLINT_PYTHON ${CMAKE_COMMAND} -E env "PYTHONPATH=${_ROSLINT_PYTHONPATH}"
+    ${PYTHON_EXECUTABLE})
 
 # roslint_<package> and the overall roslint target, made once (roslint-extras.cmake.em l. 15-27)
 macro(_roslint_create_targets)
@@ -41,7 +47,7 @@ function(roslint_cpp)
     file(GLOB_RECURSE _files *.cpp *.h *.hpp)
   endif()
   if(NOT DEFINED ROSLINT_CPP_CMD)
-    set(ROSLINT_CPP_CMD ${PYTHON_EXECUTABLE} -m roslint.cpplint_wrapper)
+    set(ROSLINT_CPP_CMD ${_ROSLINT_PYTHON} -m roslint.cpplint_wrapper)
   endif()
   roslint_custom("${ROSLINT_CPP_CMD}" "${ROSLINT_CPP_OPTS}" ${_files})
 endfunction()
@@ -54,7 +60,7 @@ function(roslint_python)
     file(GLOB_RECURSE _files *.py)
   endif()
   if(NOT DEFINED ROSLINT_PYTHON_CMD)
-    set(ROSLINT_PYTHON_CMD ${PYTHON_EXECUTABLE} -m roslint.pycodestyle_wrapper)
+    set(ROSLINT_PYTHON_CMD ${_ROSLINT_PYTHON} -m roslint.pycodestyle_wrapper)
   endif()
   roslint_custom("${ROSLINT_PYTHON_CMD}" "${ROSLINT_PYTHON_OPTS}" ${_files})
 endfunction()
@@ -64,6 +70,6 @@ endfunction()
 function(roslint_add_test)
   _roslint_create_targets()
   catkin_run_tests_target("roslint" "package" "roslint-${PROJECT_NAME}.xml"
-    COMMAND "${CATKIN_ENV} ${PYTHON_EXECUTABLE} -m roslint.test_wrapper ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/roslint-${PROJECT_NAME}.xml make roslint_${PROJECT_NAME}"
+    COMMAND "${CATKIN_ENV} ${CMAKE_COMMAND} -E env PYTHONPATH=${_ROSLINT_PYTHONPATH} ${PYTHON_EXECUTABLE} -m roslint.test_wrapper ${CATKIN_TEST_RESULTS_DIR}/${PROJECT_NAME}/roslint-${PROJECT_NAME}.xml make roslint_${PROJECT_NAME}"
     WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 endfunction()
