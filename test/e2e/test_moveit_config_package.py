@@ -15,7 +15,7 @@ import subprocess
 
 import numpy as np
 import pytest
-from tf.transformations import quaternion_matrix
+from tf.transformations import euler_from_matrix, quaternion_matrix
 
 import headless
 import rviz_view
@@ -106,6 +106,16 @@ def check_cpp_steps(urdf, steps):
     metres, radians = pose_errors(urdf, pose["source"], np.array(pose["goal"]))
     assert metres <= SAME_FK and radians <= SAME_FK, (metres, radians)
     metres, radians = pose_errors(urdf, pose["joints"], np.array(pose["goal"]))
+    assert metres <= METRES and radians <= RADIANS, (metres, radians)
+    # getCurrentPose and getCurrentRPY: the tool where urdf_tools puts it at the reported joints
+    metres, radians = pose_errors(urdf, pose["joints"], np.array(pose["current_pose"]))
+    assert metres <= SAME_FK and radians <= SAME_FK, (metres, radians)
+    np.testing.assert_allclose(
+        pose["rpy"], euler_from_matrix(tool_pose(urdf, pose["joints"]), "sxyz"), atol=SAME_FK)
+
+    ik = steps["ik"]
+    assert ik["ok"] and ik["solved"], ik
+    metres, radians = pose_errors(urdf, ik["joints"], np.array(ik["goal"]))
     assert metres <= METRES and radians <= RADIANS, (metres, radians)
 
     joint = steps["joint"]
