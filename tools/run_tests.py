@@ -1,7 +1,8 @@
 """Runs every test tier of the workspace and ends with one line: ``N passed, N failed``.
 
 Tiers, in order (design.md, "Tests"):
-  1. unit       pytest, no master:   <package>/test/unit/, test/unit/
+  1. unit       pytest, no master:   <package>/test/unit/, test/unit/; then every package's
+                C++ gtests (catkin_add_gtest, built by tools/setup.sh), from its test/ folder
   2. description pytest, no master:  <package>/test/description/, test/description/
   3. rostest    a real master each:  <package>/test/rostest/*.test and <package>/test/*.test
                 (two files at a time, each on its own free port, but for a few timing-bound
@@ -22,6 +23,7 @@ from __future__ import annotations
 import argparse
 import glob
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -37,6 +39,7 @@ TIERS = ("unit", "description", "rostest", "e2e", "fuzz")
 # The longest a single rostest file may take, launch and tear-down included; each
 # <test> has its own, shorter time-limit.
 ROSTEST_TIMEOUT = 600
+GTEST_TIMEOUT = 300  # s: one gtest executable, whole
 # rostest's own limit for a <test> without time-limit, s
 ROSTEST_DEFAULT_LIMIT = 60.0
 # rostest files run at once: each has its own master on a free port and its own ROS_HOME.
@@ -175,6 +178,49 @@ def run_pytest(tier: str, paths: List[str], keyword: str,
     return tally
 
 
+# catkin_add_gtest(<name> ...) in a package's CMakeLists: tools/setup.sh builds the
+# executables (catkin's `tests` target) into the workspace's devel space
+GTEST_CALL = re.compile(r"catkin_add_gtest\(\s*([A-Za-z0-9_]+)")
+DEVEL_LIB = os.path.join(REPO, ".ws", "devel", "lib")
+
+
+def run_gtests(keyword: str) -> Tally:
+    """Every package's C++ gtests, run from the package's test/ folder (where they find
+    their data), their cases counted from gtest's JUnit output."""
+    tally = Tally()
+    for package in packages():
+        cmake = os.path.join(package, "CMakeLists.txt")
+        if not os.path.exists(cmake):
+            continue
+        with open(cmake, encoding="utf-8") as stream:
+            names = GTEST_CALL.findall(stream.read())
+        for name in names:
+            if keyword and keyword not in name:
+                continue
+            binary = os.path.join(DEVEL_LIB, os.path.basename(package), name)
+            label = f"{os.path.basename(package)}/{name}"
+            if not os.access(binary, os.X_OK):
+                tally.failed += 1
+                tally.failures.append(f"{label}: not built ({binary}; `make setup` builds it)")
+                continue
+            junit = os.path.join(RESULTS, f"gtest-{name}.xml")
+            if os.path.exists(junit):
+                os.remove(junit)
+            done = subprocess.run([binary, f"--gtest_output=xml:{junit}"],
+                                  cwd=os.path.join(package, "test"), check=False, text=True,
+                                  stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                  timeout=GTEST_TIMEOUT)
+            found = count_junit(junit) if os.path.exists(junit) else \
+                Tally(failed=1, failures=[f"{label}: exited {done.returncode} without results"])
+            if done.returncode != 0 and found.failed == 0:
+                found.failed, found.failures = 1, [f"{label}: exited {done.returncode}"]
+            if found.failed:
+                print(done.stdout, end="", flush=True)
+            print(f"gtest {label}: {found.passed} passed, {found.failed} failed", flush=True)
+            tally.add(found)
+    return tally
+
+
 def time_limit(test_file: str) -> float:
     """The largest ``time-limit`` of the file's <test> elements (rostest's default when none)."""
     try:
@@ -265,6 +311,7 @@ def main() -> int:
             tally = run_pytest(tier, [os.path.join(p, "test", "unit") for p in packages()]
                                + [os.path.join(REPO, "test", "unit")], args.keyword,
                                UNIT_LANES)
+            tally.add(run_gtests(args.keyword))
         elif tier == "description":
             tally = run_pytest(tier, [os.path.join(p, "test", "description") for p in packages()]
                                + [os.path.join(REPO, "test", "description")], args.keyword,

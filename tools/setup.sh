@@ -135,8 +135,10 @@ platform_count=$(find -L "$platform_ws/src" -name package.xml -not -path '*/test
 export PATH="/usr/bin:/bin:$PATH"
 log="$ws/catkin_make.log"
 platform_log="$platform_ws/catkin_make.log"
+# then catkin's `tests` target: the packages' C++ gtest executables (tools/run_tests.py
+# runs them in the unit tier)
 (cd "$ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DPython3_EXECUTABLE=/usr/bin/python3 -DCATKIN_ENABLE_TESTING=ON \
-   >"$log" 2>&1) &
+   >"$log" 2>&1 && make -C build tests >>"$log" 2>&1) &
 workspace_build=$!
 (cd "$platform_ws" && catkin_make -DPYTHON_EXECUTABLE=/usr/bin/python3 -DPython3_EXECUTABLE=/usr/bin/python3 \
    -DCATKIN_ENABLE_TESTING=OFF >"$platform_log" 2>&1) &
