@@ -4,8 +4,10 @@
 // rviz to animate and a coloured robot state; then prompt() until "next" arrives from the
 // RvizVisualToolsGui topic, and a last text. test/visual_tools.test checks what it publishes.
 //
-// Parameters: ~group (the planning group), ~tip_link (the link traced), ~trajectory (a flat
-// list of the group's positions, one waypoint after another).
+// Parameters: ~group (the planning group), ~trajectory (a flat list of the group's positions,
+// one waypoint after another), ~tip_link (the link traced) or ~by_group (true: trace the
+// group's end-effector tips, as Interbotix's interbotix_moveit_interface does), ~base_frame
+// (the markers' frame; the model's root link by default).
 #include <ros/ros.h>
 
 #include <moveit/robot_model_loader/robot_model_loader.h>
@@ -48,9 +50,12 @@ int main(int argc, char** argv)
 
   std::string group_name;
   std::string tip_link;
+  std::string base_frame;
+  bool by_group = false;
   std::vector<double> flat_trajectory;
   private_nh.param<std::string>("group", group_name, "manipulator");
   private_nh.param<std::string>("tip_link", tip_link, "tool0");
+  private_nh.param("by_group", by_group, false);
   private_nh.getParam("trajectory", flat_trajectory);
 
   robot_model_loader::RobotModelLoader robot_model_loader("robot_description");
@@ -68,7 +73,8 @@ int main(int argc, char** argv)
     return 1;
   }
 
-  ListenedVisualTools visual_tools(robot_model->getRootLinkName());
+  private_nh.param<std::string>("base_frame", base_frame, robot_model->getRootLinkName());
+  ListenedVisualTools visual_tools(base_frame);
   visual_tools.deleteAllMarkers();
   visual_tools.loadRemoteControl();
   visual_tools.waitForListeners();
@@ -109,8 +115,11 @@ int main(int argc, char** argv)
     point.time_from_start = ros::Duration(static_cast<double>(start / dof));
     trajectory.joint_trajectory.points.push_back(point);
   }
-  const moveit::core::LinkModel* tip = robot_model->getLinkModel(tip_link);
-  if (!visual_tools.publishTrajectoryLine(trajectory, tip, joint_model_group))
+  const bool traced = by_group ?
+                          visual_tools.publishTrajectoryLine(trajectory, joint_model_group) :
+                          visual_tools.publishTrajectoryLine(trajectory, robot_model->getLinkModel(tip_link),
+                                                             joint_model_group);
+  if (!traced)
   {
     ROS_ERROR("visual_tools_demo: publishTrajectoryLine failed");
     return 1;

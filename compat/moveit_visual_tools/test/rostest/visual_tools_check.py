@@ -4,7 +4,9 @@ style) publishes, against the truth: marker kinds, namespaces, frame, sizes and 
 rviz_visual_tools noetic-devel 3.9.1 makes them; the trajectory line's spheres and cylinders
 against urdf_tools' forward kinematics of the trajectory's waypoints (1e-6 m); the
 DisplayTrajectory and DisplayRobotState; and prompt() holding the node until a sensor_msgs/Joy
-"next" arrives on /rviz_visual_tools_gui."""
+"next" arrives on /rviz_visual_tools_gui. Run by visual_tools.test (the Setup-Assistant
+fixture's six-axis arm, a link traced) and visual_tools_interbotix.test (the px100 in its
+namespace, the group's end-effector tip traced)."""
 import threading
 import time
 import unittest
@@ -20,9 +22,10 @@ from visualization_msgs.msg import Marker, MarkerArray
 from urdf_tools.kinematics import link_transform
 from urdf_tools.model import parse_urdf
 
-NODE = "/visual_tools_demo"
-BASE_FRAME = "base_link"  # the node's MoveItVisualTools frame: the model's root link
-TIP_LINK = "tool0"
+# The node checked, its markers' frame, the link it traces and where its robot is described
+# (~node, ~base_frame, ~tip_link, ~robot_description); the defaults are the six-axis fixture's
+DEFAULTS = {"node": "/visual_tools_demo", "base_frame": "base_link", "tip_link": "tool0",
+            "robot_description": "/robot_description"}
 FK_TOLERANCE = 1e-6  # m
 STARTUP_TIMEOUT = 60.0  # s: the node loads the model and waits for this checker's subscriptions
 RELEASE_TIMEOUT = 10.0  # s: "next" is looked at every 0.25 s (remote_control.cpp l. 159)
@@ -79,18 +82,24 @@ class VisualTools(unittest.TestCase):
         cls.robot_states = []
         # The display topics first: the node waits for all three before publishing
         rospy.Subscriber("/move_group/display_planned_path", DisplayTrajectory, cls._keep(cls.trajectories))
-        rospy.Subscriber(NODE + "/display_robot_state", DisplayRobotState, cls._keep(cls.robot_states))
+        rospy.Subscriber(cls.setting("node") + "/display_robot_state", DisplayRobotState,
+                         cls._keep(cls.robot_states))
         rospy.Subscriber("/rviz_visual_tools", MarkerArray, cls._on_markers, queue_size=100)
         cls.joy = rospy.Publisher("/rviz_visual_tools_gui", Joy, queue_size=10)
 
-        cls.model = parse_urdf(rospy.get_param("/robot_description"))
-        cls.joints = [j.name for j in cls.model.chain(BASE_FRAME, TIP_LINK) if j.movable]
-        flat = rospy.get_param(NODE + "/trajectory")
+        cls.model = parse_urdf(rospy.get_param(cls.setting("robot_description")))
+        base, tip = cls.setting("base_frame"), cls.setting("tip_link")
+        cls.joints = [j.name for j in cls.model.chain(base, tip) if j.movable]
+        flat = rospy.get_param(cls.setting("node") + "/trajectory")
         cls.waypoints = [flat[i:i + len(cls.joints)] for i in range(0, len(flat), len(cls.joints))]
-        cls.tip_positions = [link_transform(cls.model, BASE_FRAME, TIP_LINK, dict(zip(cls.joints, w)))[:3, 3]
+        cls.tip_positions = [link_transform(cls.model, base, tip, dict(zip(cls.joints, w)))[:3, 3]
                              for w in cls.waypoints]
 
         wait_until(lambda: cls.lamp() is not None, "the node to wait in prompt() (its red lamp)", STARTUP_TIMEOUT)
+
+    @staticmethod
+    def setting(name):
+        return rospy.get_param("~" + name, DEFAULTS[name])
 
     @classmethod
     def _keep(cls, into):
@@ -127,7 +136,7 @@ class VisualTools(unittest.TestCase):
     def test_every_marker_is_in_the_base_frame(self):
         with self.lock:
             frames = {m.header.frame_id for m in self.markers}
-        self.assertEqual(frames, {BASE_FRAME})
+        self.assertEqual(frames, {self.setting("base_frame")})
 
     def test_delete_all_markers_comes_first(self):
         with self.lock:
@@ -203,12 +212,12 @@ class VisualTools(unittest.TestCase):
     def test_display_trajectory_holds_the_waypoints(self):
         with self.lock:
             (display,) = self.trajectories
-        self.assertEqual(display.model_id, "six_axis_arm")
+        self.assertEqual(display.model_id, self.model.name)
         (trajectory,) = display.trajectory
         self.assertEqual(list(trajectory.joint_trajectory.joint_names), self.joints)
         np.testing.assert_allclose([p.positions for p in trajectory.joint_trajectory.points], self.waypoints)
         start = dict(zip(display.trajectory_start.joint_state.name, display.trajectory_start.joint_state.position))
-        self.assertEqual(start, {name: 0.0 for name in self.joints})
+        self.assertEqual({name: start[name] for name in self.joints}, {name: 0.0 for name in self.joints})
 
     def test_robot_state_is_the_last_waypoint_in_orange(self):
         with self.lock:
