@@ -26,6 +26,13 @@ const std::string TIP = "px100/ee_gripper_link";
 // how close a reached joint goal must be (rad): the fake controllers reach the last point exactly
 const double JOINT_TOLERANCE = 0.01;
 const double JOINT_STATES_WAIT = 5.0;  // s
+// the stopped motion: 1.5 rad of waist at a tenth of its 2.35 rad/s takes over 6 s, long enough to stop it midway
+const double WAIST_TRAVEL = 1.5;         // rad
+const double SLOW = 0.1;
+const double MOVED = 0.05;               // rad: the waist has left its start (or stopped this short of the goal)
+const double MOTION_START_WAIT = 10.0;   // s (wall): planning and the start of execution
+const double STOP_WAIT = 10.0;           // s: the move's result after the stop
+const double POLL = 0.05;                // s (wall)
 }  // namespace
 
 class MoveGroupInterfaceTest : public ::testing::Test
@@ -203,6 +210,29 @@ TEST_F(MoveGroupInterfaceTest, PlansAndMovesThroughMoveGroup)
   EXPECT_EQ(group_->getNamedTargetValues("Home").at("waist"), goal[0]);
   group_->forgetJointValues("Home");
   EXPECT_EQ(group_->getNamedTargetValues("Home").at("waist"), home.at("waist"));
+}
+
+TEST_F(MoveGroupInterfaceTest, StopsAMoveUnderWay)
+{
+  // a slow motion of the waist, sent without waiting; stopped once joint_states show it moving
+  ASSERT_TRUE(group_->setNamedTarget("Home"));
+  ASSERT_EQ(group_->move(), Codes::SUCCESS);
+  const double start = group_->getCurrentJointValues().at(0);
+  std::vector<double> goal = group_->getCurrentJointValues();
+  goal[0] = start + WAIST_TRAVEL;
+  group_->setMaxVelocityScalingFactor(SLOW);
+  ASSERT_TRUE(group_->setJointValueTarget(goal));
+  ASSERT_EQ(group_->asyncMove(), Codes::SUCCESS);  // sent
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(MOTION_START_WAIT);
+  while (std::fabs(group_->getCurrentJointValues().at(0) - start) < MOVED && ros::WallTime::now() < deadline)
+    ros::WallDuration(POLL).sleep();
+  ASSERT_GE(std::fabs(group_->getCurrentJointValues().at(0) - start), MOVED) << "the motion did not start";
+  group_->stop();
+  ASSERT_TRUE(group_->getMoveGroupClient().waitForResult(ros::Duration(STOP_WAIT)));
+  EXPECT_EQ(group_->getMoveGroupClient().getResult()->error_code.val, Codes::PREEMPTED);
+  // the arm stays short of the goal (a state stamped after the stop)
+  EXPECT_LT(group_->getCurrentJointValues().at(0), goal[0] - MOVED);
+  group_->setMaxVelocityScalingFactor(1.0);
 }
 
 TEST_F(MoveGroupInterfaceTest, AttachesAndDetachesThroughTheScene)
