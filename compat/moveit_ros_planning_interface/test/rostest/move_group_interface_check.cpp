@@ -33,6 +33,7 @@ const double MOVED = 0.05;               // rad: the waist has left its start (o
 const double MOTION_START_WAIT = 10.0;   // s (wall): planning and the start of execution
 const double STOP_WAIT = 10.0;           // s: the move's result after the stop
 const double POLL = 0.05;                // s (wall)
+const double SCENE_WAIT = 5.0;           // s (wall): a diff on the planning_scene topic applied
 }  // namespace
 
 class MoveGroupInterfaceTest : public ::testing::Test
@@ -212,6 +213,29 @@ TEST_F(MoveGroupInterfaceTest, PlansAndMovesThroughMoveGroup)
   EXPECT_EQ(group_->getNamedTargetValues("Home").at("waist"), home.at("waist"));
 }
 
+TEST_F(MoveGroupInterfaceTest, PlansFromAGivenStartState)
+{
+  moveit::core::RobotStatePtr start = group_->getCurrentState();
+  ASSERT_TRUE(start);
+  const std::vector<double> from = { -0.5, 0.1, 0.2, -0.3 };
+  start->setJointGroupPositions(GROUP, from);
+  group_->setStartState(*start);
+  ASSERT_TRUE(group_->setJointValueTarget(std::vector<double>{ 0.5, 0.0, 0.0, 0.0 }));
+  MoveGroupInterface::Plan plan;
+  const moveit::core::MoveItErrorCode code = group_->plan(plan);
+  group_->setStartStateToCurrentState();
+  ASSERT_TRUE(static_cast<bool>(code)) << code;
+  // the plan starts where it was told to, not where the arm is
+  const trajectory_msgs::JointTrajectory& path = plan.trajectory_.joint_trajectory;
+  ASSERT_FALSE(path.points.empty());
+  for (std::size_t i = 0; i < ARM.size(); ++i)
+  {
+    const auto it = std::find(path.joint_names.begin(), path.joint_names.end(), ARM[i]);
+    ASSERT_NE(it, path.joint_names.end());
+    EXPECT_NEAR(path.points.front().positions[it - path.joint_names.begin()], from[i], 1e-6) << ARM[i];
+  }
+}
+
 TEST_F(MoveGroupInterfaceTest, StopsAMoveUnderWay)
 {
   // a slow motion of the waist, sent without waiting; stopped once joint_states show it moving
@@ -268,6 +292,19 @@ TEST_F(MoveGroupInterfaceTest, AttachesAndDetachesThroughTheScene)
 
   ASSERT_TRUE(scene.clear());
   EXPECT_TRUE(scene.getKnownObjectNames().empty());
+
+  // asynchronously, on the planning_scene topic: the object appears, then goes
+  auto known = [&scene] { return scene.getKnownObjectNames(); };
+  auto waitFor = [&known](const std::vector<std::string>& wanted) {
+    const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(SCENE_WAIT);
+    while (known() != wanted && ros::WallTime::now() < deadline)
+      ros::WallDuration(POLL).sleep();
+    return known();
+  };
+  scene.addCollisionObjects({ box });
+  EXPECT_EQ(waitFor({ "test_box" }), std::vector<std::string>{ "test_box" });
+  scene.removeCollisionObjects({ "test_box" });
+  EXPECT_TRUE(waitFor({}).empty());
 }
 
 int main(int argc, char** argv)
