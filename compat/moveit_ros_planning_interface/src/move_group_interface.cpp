@@ -4,12 +4,11 @@
 #include <moveit/move_group_interface/move_group_interface.h>
 
 #include <algorithm>
-#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
+#include <moveit/common_planning_interface_objects/common_objects.h>
 #include <moveit/kinematic_constraints/utils.h>
-#include <moveit/robot_model_loader/robot_model_loader.h>
 #include <moveit/robot_state/conversions.h>
 #include <moveit_msgs/ApplyPlanningScene.h>
 #include <moveit_msgs/ExecuteTrajectoryAction.h>
@@ -27,7 +26,6 @@
 #include <tf2/LinearMath/Matrix3x3.h>
 #include <tf2/LinearMath/Quaternion.h>
 #include <tf2_geometry_msgs/tf2_geometry_msgs.h>
-#include <tf2_ros/transform_listener.h>
 
 #include "current_state_monitor.h"
 #include "wait_for_subscriber.h"
@@ -81,44 +79,6 @@ enum ActiveTargetType
   ORIENTATION
 };
 
-std::shared_ptr<tf2_ros::Buffer> sharedTF()
-{
-  // one buffer and listener for every interface made without a buffer, as upstream's getSharedTF; the listener lives
-  // exactly as long as the buffer it fills
-  struct BufferAndListener
-  {
-    tf2_ros::Buffer buffer;
-    tf2_ros::TransformListener listener{ buffer };
-  };
-  static std::mutex mutex;
-  static std::weak_ptr<tf2_ros::Buffer> shared;
-  std::lock_guard<std::mutex> lock(mutex);
-  std::shared_ptr<tf2_ros::Buffer> buffer = shared.lock();
-  if (!buffer)
-  {
-    auto both = std::make_shared<BufferAndListener>();
-    buffer = std::shared_ptr<tf2_ros::Buffer>(both, &both->buffer);
-    shared = buffer;
-  }
-  return buffer;
-}
-
-moveit::core::RobotModelConstPtr sharedRobotModel(const std::string& description)
-{
-  // one model per parameter name for the process, as upstream's getSharedRobotModel
-  static std::mutex mutex;
-  static std::map<std::string, std::weak_ptr<const moveit::core::RobotModel>> models;
-  std::lock_guard<std::mutex> lock(mutex);
-  moveit::core::RobotModelConstPtr model = models[description].lock();
-  if (!model)
-  {
-    robot_model_loader::RobotModelLoader loader(description);
-    model = loader.getModel();
-    models[description] = model;
-  }
-  return model;
-}
-
 std::string stripSlash(const std::string& frame)
 {
   return !frame.empty() && frame[0] == '/' ? frame.substr(1) : frame;
@@ -171,7 +131,7 @@ public:
                          const ros::WallDuration& wait_for_servers)
     : opt_(opt), node_handle_(opt.node_handle_), tf_buffer_(tf_buffer)
   {
-    robot_model_ = opt.robot_model_ ? opt.robot_model_ : sharedRobotModel(opt.robot_description_);
+    robot_model_ = opt.robot_model_ ? opt.robot_model_ : getSharedRobotModel(opt.robot_description_);
     if (!robot_model_)
       fail("Unable to construct robot model. Please make sure all needed information is on the parameter server "
            "(robot_description '" +
@@ -719,7 +679,7 @@ MoveGroupInterface::MoveGroupInterface(const std::string& group_name, const std:
 {
   if (!ros::ok())
     throw std::runtime_error("ROS does not seem to be running");
-  impl_ = new MoveGroupInterfaceImpl(Options(group_name), tf_buffer ? tf_buffer : sharedTF(), wait_for_servers);
+  impl_ = new MoveGroupInterfaceImpl(Options(group_name), tf_buffer ? tf_buffer : getSharedTF(), wait_for_servers);
 }
 
 MoveGroupInterface::MoveGroupInterface(const std::string& group, const std::shared_ptr<tf2_ros::Buffer>& tf_buffer,
@@ -731,7 +691,7 @@ MoveGroupInterface::MoveGroupInterface(const std::string& group, const std::shar
 MoveGroupInterface::MoveGroupInterface(const Options& opt, const std::shared_ptr<tf2_ros::Buffer>& tf_buffer,
                                        const ros::WallDuration& wait_for_servers)
 {
-  impl_ = new MoveGroupInterfaceImpl(opt, tf_buffer ? tf_buffer : sharedTF(), wait_for_servers);
+  impl_ = new MoveGroupInterfaceImpl(opt, tf_buffer ? tf_buffer : getSharedTF(), wait_for_servers);
 }
 
 MoveGroupInterface::MoveGroupInterface(const Options& opt, const std::shared_ptr<tf2_ros::Buffer>& tf_buffer,
