@@ -485,11 +485,8 @@ const JointModel* RobotModel::getJointModel(const std::string& name) const
 
 JointModel* RobotModel::getJointModel(const std::string& name)
 {
-  auto it = joint_model_map_.find(name);
-  if (it != joint_model_map_.end())
-    return it->second;
-  ROS_ERROR_NAMED(LOGNAME, "Joint '%s' not found in model '%s'", name.c_str(), model_name_.c_str());
-  return nullptr;
+  // the const lookup's answer: the model owns its joints non-const
+  return const_cast<JointModel*>(static_cast<const RobotModel*>(this)->getJointModel(name));
 }
 
 const JointModel* RobotModel::getJointModel(int index) const
@@ -521,14 +518,8 @@ const LinkModel* RobotModel::getLinkModel(const std::string& name, bool* has_lin
 
 LinkModel* RobotModel::getLinkModel(const std::string& name, bool* has_link)
 {
-  auto it = link_model_map_.find(name);
-  if (has_link)
-    *has_link = it != link_model_map_.end();
-  if (it != link_model_map_.end())
-    return it->second;
-  if (!has_link)
-    ROS_ERROR_NAMED(LOGNAME, "Link '%s' not found in model '%s'", name.c_str(), model_name_.c_str());
-  return nullptr;
+  // the const lookup's answer: the model owns its links non-const
+  return const_cast<LinkModel*>(static_cast<const RobotModel*>(this)->getLinkModel(name, has_link));
 }
 
 const LinkModel* RobotModel::getLinkModel(int index) const
@@ -654,11 +645,8 @@ const JointModelGroup* RobotModel::getJointModelGroup(const std::string& name) c
 
 JointModelGroup* RobotModel::getJointModelGroup(const std::string& name)
 {
-  auto it = joint_model_group_map_.find(name);
-  if (it != joint_model_group_map_.end())
-    return it->second;
-  ROS_ERROR_NAMED(LOGNAME, "Group '%s' not found in model '%s'", name.c_str(), model_name_.c_str());
-  return nullptr;
+  // the const lookup's answer: the model owns its groups non-const
+  return const_cast<JointModelGroup*>(static_cast<const RobotModel*>(this)->getJointModelGroup(name));
 }
 
 bool RobotModel::hasEndEffector(const std::string& eef) const
