@@ -334,6 +334,8 @@ public:
   void printStateInfo(std::ostream& out = std::cout) const;
   void printTransforms(std::ostream& out = std::cout) const;
   void printTransform(const Eigen::Isometry3d& transform, std::ostream& out = std::cout) const;
+  /// The state's generator, made when first asked for (public, as upstream's)
+  random_numbers::RandomNumberGenerator& getRandomNumberGenerator();
 
 private:
   void updateMimicJoint(const JointModel* joint);
@@ -341,7 +343,6 @@ private:
   {
     dirty_ = true;
   }
-  random_numbers::RandomNumberGenerator& getRandomNumberGenerator();
   /// The KDL fallback of setFromIK: pose (model frame) of @e tip, solving the group's variables
   bool setFromIKWithKDL(const JointModelGroup* group, const Eigen::Isometry3d& pose, const LinkModel* tip,
                         double timeout, const GroupStateValidityCallbackFn& constraint);

@@ -1,7 +1,6 @@
 // MoveIt's MoveItErrorCode (moveit_core/utils/include/moveit/utils/moveit_error_code.h, noetic-devel 7c0343f0): a
 // moveit_msgs::MoveItErrorCodes that converts to bool (true only for SUCCESS), compares with an int code and prints as
-// the code's name. Upstream ships it in moveit_core; here moveit_ros_planning_interface's library carries it, the
-// header at MoveIt's path, so `#include <moveit/utils/moveit_error_code.h>` builds as it does with MoveIt.
+// the code's name. In moveit_core as upstream's (library moveit_utils).
 #pragma once
 
 #include <ostream>
