@@ -52,8 +52,12 @@ ROSTEST_JOBS = 3
 # time. rotate.test (5x) failed beside another file once (-180 degrees overshot to -180.4,
 # then "no progress for 2 s": the rotate service's stall check counted no turn back after
 # an overshoot, fixed in d60315c; it stays alone until it is measured stable beside
-# others); flip_headings.test (2x, four flip nodes) says so itself.
-ROSTEST_ALONE = ("my_rb1_ros/rotate.test", "diff_drive/flip_headings.test")
+# others); flip_headings.test (2x, four flip nodes) says so itself. pick_place_sim.test's
+# three placements in a row (the mover's gripper commands reach a simulation running
+# ahead of them) tipped the block over once in four fresh-clone runs beside two other files;
+# alone it passed each of three runs.
+ROSTEST_ALONE = ("my_rb1_ros/rotate.test", "diff_drive/flip_headings.test",
+                 "arm_move/pick_place_sim.test")
 
 
 # The e2e tier in two lanes side by side (each test starts its own master on a free port
