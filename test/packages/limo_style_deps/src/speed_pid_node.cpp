@@ -1,4 +1,3 @@
-// Copyright 2026 Workspace maintainers
 // A LIMO-style speed loop: each measured speed (std_msgs/Float64 on measured_speed) steps a
 // control_toolbox::Pid towards the target (target_speed) over the loop's fixed period, and
 // the command goes out as ackermann_msgs/AckermannDriveStamped on ackermann_cmd through a
