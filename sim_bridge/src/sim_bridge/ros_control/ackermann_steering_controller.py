@@ -36,9 +36,7 @@ from sim_bridge.ros_control.ackermann_odometry import AckermannOdometry
 from sim_bridge.ros_control.controller_base import Controller
 from sim_bridge.ros_control.diff_drive_controller import (DEFAULT_CMD_VEL_TIMEOUT,
                                                           DEFAULT_PUBLISH_RATE, INIT_EXCEPTION,
-                                                          MESSAGE_THROTTLE, NOT_RUNNING,
-                                                          QUEUE_SIZE, TOO_MANY_PUBLISHERS,
-                                                          DiffDriveController)
+                                                          QUEUE_SIZE, DiffDriveController)
 from sim_bridge.ros_control.diff_drive_odometry import DEFAULT_ROLLING_WINDOW
 
 # ASC:143, :147: the joints' names when the parameters are absent
@@ -71,6 +69,10 @@ class AckermannSteeringController(Controller):
     # and odom and its transform published as DDC:358-389 do (ASC:283-308, the message's
     # constant fields as setOdomPubFields sets them, :486-512)
     _publish = DiffDriveController._publish
+    # and cmd_vel taken as DDC:532-565 takes it (cmdVelCallback, ASC:363-390: the publishers'
+    # count, the brake, the command kept with its time), angular.z meaning the steering angle
+    _on_command = DiffDriveController._on_command
+    nan_warning = NAN_COMMAND
 
     def __init__(self, name, params, hardware, io):
         super().__init__(name, params, hardware, io)
@@ -191,25 +193,6 @@ class AckermannSteeringController(Controller):
         return [("position", [self.steer]), ("velocity", [self.rear])]
 
     # --- cmd_vel ------------------------------------------------------------------------
-    def _on_command(self, message: Twist):
-        """cmdVelCallback (ASC:363-390)."""
-        if not self.running:
-            self.io.bus.warn(f"{self.name}: {NOT_RUNNING}")
-            return
-        publishers = getattr(self._subscription, "get_num_connections", None)
-        count = publishers() if publishers is not None else 1
-        if not self.allow_multiple_publishers and count > 1:
-            self.io.bus.warn_throttled(f"{self.topic}:publishers", MESSAGE_THROTTLE,
-                                       f"{self.name}: {TOO_MANY_PUBLISHERS.format(count)}")
-            self._brake()
-            return
-        linear, angle = message.linear.x, message.angular.z
-        if not (math.isfinite(linear) and math.isfinite(angle)):
-            self.io.bus.warn_throttled(f"{self.topic}:nan", MESSAGE_THROTTLE, NAN_COMMAND)
-            return
-        self.command = (linear, angle)
-        self._commanded_ns = -1
-
     def _brake(self) -> None:
         """brake (ASC:354-361): the rear wheel still, the steering straight."""
         self.hardware.joints[self.rear].command = 0.0

@@ -60,6 +60,8 @@ def _joint_list(value, what: str, name: str):
 
 class DiffDriveController(Controller):
     interface = "velocity"
+    # what a NaN command is answered with (DDC:547); the ackermann controller's differs
+    nan_warning = NAN_COMMAND
 
     def __init__(self, name, params, hardware, io):
         super().__init__(name, params, hardware, io)
@@ -217,7 +219,7 @@ class DiffDriveController(Controller):
             return
         linear, angular = message.linear.x, message.angular.z
         if not (math.isfinite(linear) and math.isfinite(angular)):
-            self.io.bus.warn_throttled(f"{self.topic}:nan", MESSAGE_THROTTLE, NAN_COMMAND)
+            self.io.bus.warn_throttled(f"{self.topic}:nan", MESSAGE_THROTTLE, self.nan_warning)
             return
         self.command = (linear, angular)
         self._commanded_ns = -1
