@@ -146,6 +146,12 @@ def check_cpp_steps(urdf, steps):
     assert steps["removed"]["ok"] and steps["removed"]["objects"] == []
 
 
+def cartesian_log(path):
+    """move_group's lines about Cartesian paths (where one stopped and why)."""
+    with open(path, encoding="utf-8", errors="replace") as log:
+        return [line.strip() for line in log if "artesian" in line]
+
+
 def test_a_setup_assistant_config_runs_the_tutorials_steps(overlay, ros_env, results_dir):
     workspace, overlay_env = overlay
     env = dict(overlay_env, ROS_MASTER_URI=ros_env["ROS_MASTER_URI"], ROS_HOME=ros_env["ROS_HOME"])
@@ -171,7 +177,8 @@ def test_a_setup_assistant_config_runs_the_tutorials_steps(overlay, ros_env, res
     assert steps["pose"]["ok"]
     metres, radians = pose_errors(urdf, steps["pose"]["joints"], np.array(steps["pose"]["goal"]))
     assert metres <= 0.001 and radians <= 0.01, (metres, radians)
-    assert steps["cartesian"]["ok"] and steps["cartesian"]["fraction"] == pytest.approx(1.0)
+    assert steps["cartesian"]["ok"] and steps["cartesian"]["fraction"] == pytest.approx(1.0), (
+        steps["cartesian"], cartesian_log(os.path.join(results_dir, "demo.log")))
     metres, radians = pose_errors(urdf, steps["cartesian"]["joints"],
                                   np.array(steps["cartesian"]["goal"]))
     assert metres <= 0.001 and radians <= 0.01, (metres, radians)

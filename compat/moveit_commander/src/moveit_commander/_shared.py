@@ -16,7 +16,9 @@ from moveit_commander.roscpp_initializer import ensure_node
 from moveit_core import robot_model
 from moveit_core.robot_model import RobotModel
 
-STATE_WAIT = 1.0        # s: the longest a state getter waits for a complete state
+STATE_WAIT = 1.0        # s: the longest a state getter waits (getCurrentState's default wait,
+                        # move_group_interface.cpp:661)
+STATE_POLL = 0.005      # s: how often the wait looks at what joint_states brought
 
 _LOCK = threading.Lock()
 _MODELS: Dict[Tuple[str, str], "Robot"] = {}
@@ -65,17 +67,32 @@ class Robot:
                 self._stamps[name] = stamp
 
     def positions(self, wait: float = STATE_WAIT) -> Dict[str, float]:
-        """Every variable's current position: waits up to ``wait`` s for all to be heard;
-        those never heard are at their defaults, with a warning (as MoveIt's)."""
+        """Every variable's current position, as MoveGroupInterface's getCurrentState
+        (move_group_interface.cpp:661-680 on noetic-devel) takes it: waits up to ``wait`` s
+        until every joint has been heard in a ``joint_states`` message stamped no earlier
+        than the call (CurrentStateMonitor::waitForCurrentState(ros::Time::now(), wait),
+        current_state_monitor.cpp:272-292), so that a state asked for right after a motion
+        is the state after it, not the one a lagging subscriber last delivered. On timeout
+        MoveIt logs what it logs there and answers nothing (an empty list, an identity pose);
+        this answers the last state heard after the same messages (joints never heard at
+        their defaults)."""
         wanted = set(self.model.variables)
+        since = rospy.Time.now().to_sec()
         deadline = time.monotonic() + wait
         while True:
             with self._lock:
+                stale = {j for j in wanted if self._stamps.get(j, -1.0) < since}
                 missing = wanted - set(self._positions)
                 known = dict(self._positions)
-            if not missing or time.monotonic() > deadline or rospy.is_shutdown():
+            if not stale or time.monotonic() > deadline or rospy.is_shutdown():
                 break
-            time.sleep(0.01)
+            time.sleep(STATE_POLL)
+        if stale:
+            rospy.loginfo_throttle(5.0, "Didn't receive robot state (joint angles) with recent "
+                                   f"timestamp within {wait:g} seconds.\nCheck clock "
+                                   "synchronization if your are running ROS across multiple "
+                                   "machines!")
+            rospy.logerr_throttle(5.0, "Failed to fetch current robot state")
         if missing:
             rospy.logwarn_throttle(5.0, "moveit_commander: no joint state heard for %s on %s "
                                    "within %.1f s", sorted(missing),

@@ -187,7 +187,15 @@ def main() -> int:
             display.publish(DisplayTrajectory(model_id=model.name, trajectory_start=start,
                                               trajectory=[response_trajectory]))
 
+    def latest_state() -> None:
+        """Before planning, the state of a joint_states message no older than the request
+        (move_action_capability.cpp:67, plan_service_capability.cpp:58-59 on noetic-devel)."""
+        if not context.state.wait_for(rospy.get_time(), model.variables):
+            rospy.logwarn("Failed to fetch current robot state.")
+
     def plan_service(request):
+        if request.motion_plan_request.start_state.is_diff:
+            latest_state()
         response = planning.plan_service(request)
         shown(response.motion_plan_response.trajectory,
               response.motion_plan_response.trajectory_start)
@@ -208,6 +216,7 @@ def main() -> int:
                                                    auto_start=False)
 
         def move(goal, handle):
+            latest_state()
             result, text = planning.move(
                 goal, lambda state: move_server.publish_feedback(MoveGroupFeedback(state=state)),
                 lambda: move_server.current_goal != handle or

@@ -6,7 +6,7 @@ from) with a solution whose tip
 is at that pose (1 mm, 0.01 rad); and a Cartesian path (compute_cartesian_path) from each
 of 50 states moving the tip 1 cm up, orientation kept, which a 4- or 5-joint arm can follow,
 is followed in full when its end is reachable (but at most two of 50 that start by a
-singularity). The arms' configs as their MoveIt packages
+singularity); and a move made in one long step is refined until it follows the line. The arms' configs as their MoveIt packages
 load them: Interbotix's kinematics.yaml (position_only_ik false) for the X-series arms, and
 the px100 with position_only_ik true as the 2020 config has it (the position is checked)."""
 import math
@@ -35,6 +35,7 @@ POSITION_TOLERANCE = 0.001      # m
 ORIENTATION_TOLERANCE = 0.01    # rad
 LIFT = 0.01                     # m: the Cartesian paths' move up
 CUT_AT_MOST = 2                 # lifts of 50 cut short by a singularity
+REFINED_MOVE = 0.07             # m: along y and down z, in one step (max_step twice that)
 # s: the request's timeout, generous (0 would be the solver's 5 ms, one try from the seed
 # and a few random restarts, in MoveIt's KDL too): the solves take 1-30 ms (make bench times
 # them), and a machine busy with other tests must not cut the search short
@@ -193,3 +194,41 @@ def test_a_cartesian_lift_is_followed_in_full(arm):
     # 50 on the UR-type arm and 1 of 50 on the wx250s, on a busy machine; none on 4 or 5 joints
     assert len(cut) <= CUT_AT_MOST, f"{name}: Cartesian lifts cut short: {cut}"
     assert followed >= CARTESIAN_STATES // 2, "most lifts should stay within reach"
+
+
+def test_a_long_step_is_refined_until_its_midpoints_are_on_the_line():
+    """One 10 cm step (max_step larger than the move): CartesianInterpolator's
+    validateAndImproveInterval (moveit 9af1839) halves the interval until the joint-space
+    midpoint of every pair of consecutive states puts the tool on the line within 1 mm and
+    0.01 rad. Checked here by urdf_tools-independent FK of the context's model at each
+    midpoint, against the straight line from start to end."""
+    values, group = six_axis_arm()
+    context = from_parameters(lambda name: values[name])
+    monitor = Scene(context.model)
+    solver = context.solver(group)
+    tip = solver.tip
+    state = dict(context.model.default_positions(),
+                 **dict(zip(solver.joints, [0.0, 0.4, 0.8, 0.3, 0.5, 0.0])))
+    start = fk(context, tip, state)
+    end = start.copy()
+    end[:3, 3] += [0.0, REFINED_MOVE, -REFINED_MOVE]
+    # collisions not checked: the test data's SRDF leaves wrist_2/wrist_3 contacts enabled,
+    # and this checks the line, not the scene
+    request = GetCartesianPathRequest(group_name=group, max_step=2 * REFINED_MOVE,
+                                      avoid_collisions=False)
+    request.header.frame_id = context.model.model_frame
+    request.start_state.joint_state.name = list(state)
+    request.start_state.joint_state.position = list(state.values())
+    request.waypoints = [matrix_pose(end)]
+    answer = cartesian_path.compute_cartesian_path(context, monitor, request)
+    assert answer.fraction == pytest.approx(1.0)
+    points = [np.array(p.positions) for p in answer.solution.joint_trajectory.points]
+    assert len(points) > 2, "one step from start to end: the interval was not refined"
+    direction = (end[:3, 3] - start[:3, 3]) / np.linalg.norm(end[:3, 3] - start[:3, 3])
+    for a, b in zip(points, points[1:]):
+        middle = fk(context, tip, dict(state, **dict(zip(solver.joints, (a + b) / 2))))
+        offset = middle[:3, 3] - start[:3, 3]
+        assert np.linalg.norm(offset - direction * (offset @ direction)) <= POSITION_TOLERANCE
+        assert turned(middle, start) <= ORIENTATION_TOLERANCE
+    reached = fk(context, tip, dict(state, **dict(zip(solver.joints, points[-1]))))
+    assert np.linalg.norm(reached[:3, 3] - end[:3, 3]) < POSITION_TOLERANCE
