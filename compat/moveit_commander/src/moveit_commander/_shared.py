@@ -69,8 +69,8 @@ class Robot:
     def positions(self, wait: float = STATE_WAIT) -> Dict[str, float]:
         """Every variable's current position, as MoveGroupInterface's getCurrentState
         (move_group_interface.cpp:661-680 on noetic-devel) takes it: waits up to ``wait`` s
-        until every joint has been heard in a ``joint_states`` message stamped no earlier
-        than the call (CurrentStateMonitor::waitForCurrentState(ros::Time::now(), wait),
+        until every joint heard so far has been heard in a ``joint_states`` message stamped
+        no earlier than the call (CurrentStateMonitor::waitForCurrentState(ros::Time::now(), wait),
         current_state_monitor.cpp:272-292), so that a state asked for right after a motion
         is the state after it, not the one a lagging subscriber last delivered. On timeout
         MoveIt logs what it logs there and answers nothing (an empty list, an identity pose);
@@ -81,7 +81,10 @@ class Robot:
         deadline = time.monotonic() + wait
         while True:
             with self._lock:
-                stale = {j for j in wanted if self._stamps.get(j, -1.0) < since}
+                # joints never heard do not count, unless none was
+                # (current_state_monitor.cpp:95-114)
+                heard = [self._stamps[j] for j in wanted if j in self._stamps]
+                stale = not heard or min(heard) < since
                 missing = wanted - set(self._positions)
                 known = dict(self._positions)
             if not stale or time.monotonic() > deadline or rospy.is_shutdown():

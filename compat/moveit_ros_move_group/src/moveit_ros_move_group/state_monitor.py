@@ -34,15 +34,20 @@ class CurrentState:
         self.received.set()
 
     def wait_for(self, since: float, joints: Iterable[str], wait: float = STATE_WAIT) -> bool:
-        """True once each of ``joints`` has been heard in a message stamped at or after
-        ``since`` (s); False after ``wait`` s of waiting (CurrentStateMonitor::
+        """True once each of ``joints`` heard so far has been heard in a message stamped at
+        or after ``since`` (s); False after ``wait`` s of waiting (CurrentStateMonitor::
         waitForCurrentState, current_state_monitor.cpp:272-292): the caller goes on with the
         state it has, as move_group does after its warning."""
         if since <= 0.0:
             return False       # an unset time: MoveIt's wait answers false at once (:912)
         with self._lock:
-            return self._lock.wait_for(
-                lambda: all(self._stamps.get(j, -1.0) >= since for j in joints), timeout=wait)
+            return self._lock.wait_for(lambda: self._oldest(joints) >= since, timeout=wait)
+
+    def _oldest(self, joints: Iterable[str]) -> float:
+        """The oldest stamp among ``joints`` heard so far (those never heard do not count),
+        0 when none was (CurrentStateMonitor::getCurrentStateTimeHelper, :95-114)."""
+        heard = [self._stamps[j] for j in joints if j in self._stamps]
+        return min(heard) if heard else 0.0
 
     def positions(self) -> Dict[str, float]:
         with self._lock:
