@@ -7,8 +7,10 @@ a path to it has a segment of non-zero length, as a controller needs strictly in
 times); a position constraint on a link (a sphere or box region, as
 moveit_commander writes for a pose or position target), with or without an orientation
 constraint, is sampled by the group's IK solver from random seeds; each sample must lie
-within the bounds, satisfy every constraint of the set and be collision-free.
-:func:`satisfied` checks a state against a constraint set, as the path checks do."""
+within the bounds, satisfy every constraint of the set (and the request's path
+constraints, which MoveIt merges into each goal set) and be collision-free.
+:func:`satisfied` checks a state against a constraint set with MoveIt's evaluation
+(:mod:`moveit_core.kinematic_constraints`: intrinsic XYZ Euler angles for orientations)."""
 from __future__ import annotations
 
 import math
@@ -18,10 +20,10 @@ from typing import Dict, List, Mapping, Optional, Tuple
 
 import numpy as np
 from geometry_msgs.msg import Pose
-from moveit_msgs.msg import Constraints, MoveItErrorCodes, OrientationConstraint
-from shape_msgs.msg import SolidPrimitive
-from tf.transformations import euler_from_matrix, random_rotation_matrix
+from moveit_msgs.msg import Constraints, MoveItErrorCodes
+from tf.transformations import random_rotation_matrix
 
+from moveit_core.kinematic_constraints import ConstraintError, ConstraintSet
 from moveit_core.planning_scene import PlanningScene, SceneError, pose_matrix
 
 GOAL_SAMPLES = 4            # valid IK goals gathered for a search (one for a straight line)
@@ -45,6 +47,7 @@ class Goals:
     states: List[Dict[str, float]] = field(default_factory=list)
     ik_solutions: int = 0            # IK answers found, valid or not
     collisions: List[Tuple[str, str]] = field(default_factory=list)
+    violations: List[str] = field(default_factory=list)   # of the path constraints
 
 
 def _region_center(constraint, scene: PlanningScene, poses) -> np.ndarray:
@@ -64,74 +67,24 @@ def _frame(scene: PlanningScene, frame: str, poses) -> np.ndarray:
         raise GoalError(MoveItErrorCodes.FRAME_TRANSFORM_FAILURE, str(error)) from error
 
 
-def _inside(point: np.ndarray, constraint, scene: PlanningScene, poses) -> bool:
-    frame = _frame(scene, constraint.header.frame_id, poses)
-    region = constraint.constraint_region
-    for primitive, pose in zip(region.primitives, region.primitive_poses):
-        local = np.linalg.inv(frame @ pose_matrix(pose, "region pose")) @ np.append(point, 1.0)
-        dims = list(primitive.dimensions)
-        if primitive.type == SolidPrimitive.SPHERE and np.linalg.norm(local[:3]) <= dims[0]:
-            return True
-        if primitive.type == SolidPrimitive.BOX and np.all(np.abs(local[:3]) <= np.array(
-                dims[:3]) / 2):
-            return True
-        if primitive.type == SolidPrimitive.CYLINDER and abs(local[2]) <= dims[0] / 2 and \
-                np.linalg.norm(local[:2]) <= dims[1]:
-            return True
-    return False
-
-
-def _orientation_error(link_rotation: np.ndarray, constraint: OrientationConstraint,
-                       frame: np.ndarray) -> np.ndarray:
-    target = frame @ pose_matrix(Pose(orientation=constraint.orientation), "orientation")
-    difference = target[:3, :3].T @ link_rotation
-    if constraint.parameterization == OrientationConstraint.ROTATION_VECTOR:
-        angle = math.acos(max(-1.0, min(1.0, (np.trace(difference) - 1) / 2)))
-        if angle < 1e-12:
-            return np.zeros(3)
-        axis = np.array([difference[2, 1] - difference[1, 2], difference[0, 2] - difference[2, 0],
-                         difference[1, 0] - difference[0, 1]]) / (2 * math.sin(angle))
-        return np.abs(axis * angle)
-    full = np.eye(4)
-    full[:3, :3] = difference
-    return np.abs(np.array(euler_from_matrix(full, "sxyz")))
-
-
 def satisfied(scene: PlanningScene, positions: Mapping[str, float], constraints: Constraints,
               poses=None) -> Optional[str]:
-    """None when ``positions`` satisfy the set; else which constraint they break."""
+    """None when ``positions`` satisfy the set; else which constraint they break. Links a
+    goal names must exist (INVALID_LINK_NAME); the evaluation is MoveIt's
+    (:mod:`moveit_core.kinematic_constraints`)."""
+    for constraint in list(constraints.position_constraints) + \
+            list(constraints.orientation_constraints):
+        if constraint.link_name not in scene.model.urdf.links:
+            raise GoalError(MoveItErrorCodes.INVALID_LINK_NAME,
+                            f"a goal constraint on '{constraint.link_name}', which the robot "
+                            "lacks")
     for joint in constraints.joint_constraints:
-        value = positions.get(joint.joint_name)
-        if value is None or not (joint.position - joint.tolerance_below - 1e-9 <= value <=
-                                 joint.position + joint.tolerance_above + 1e-9):
-            return f"joint '{joint.joint_name}' at {value} (wanted {joint.position:.4f})"
-    if not (constraints.position_constraints or constraints.orientation_constraints):
-        return None
-    poses = poses if poses is not None else scene.model.link_poses(positions)
-    for constraint in constraints.position_constraints:
-        link = poses.get(constraint.link_name)
-        if link is None:
-            raise GoalError(MoveItErrorCodes.INVALID_LINK_NAME,
-                            f"position constraint on '{constraint.link_name}', which the "
-                            "robot lacks")
-        offset = constraint.target_point_offset
-        point = (link @ np.array([offset.x, offset.y, offset.z, 1.0]))[:3]
-        if not _inside(point, constraint, scene, poses):
-            return f"'{constraint.link_name}' at {np.round(point, 4).tolist()} outside its region"
-    for constraint in constraints.orientation_constraints:
-        link = poses.get(constraint.link_name)
-        if link is None:
-            raise GoalError(MoveItErrorCodes.INVALID_LINK_NAME,
-                            f"orientation constraint on '{constraint.link_name}', which the "
-                            "robot lacks")
-        error = _orientation_error(link[:3, :3], constraint,
-                                   _frame(scene, constraint.header.frame_id, poses))
-        tolerance = np.array([constraint.absolute_x_axis_tolerance,
-                              constraint.absolute_y_axis_tolerance,
-                              constraint.absolute_z_axis_tolerance]) + 1e-9
-        if np.any(error > tolerance):
-            return f"'{constraint.link_name}' turned {np.round(error, 4).tolist()} rad from its target"
-    return None
+        if joint.joint_name not in positions:
+            return f"joint '{joint.joint_name}' has no position"
+    try:
+        return ConstraintSet(scene, constraints).decide(positions, poses)
+    except ConstraintError as error:
+        raise GoalError(error.code, str(error)) from error
 
 
 def joint_goal(scene: PlanningScene, group: str, start: Mapping[str, float],
@@ -162,8 +115,10 @@ def joint_goal(scene: PlanningScene, group: str, start: Mapping[str, float],
 
 def pose_goals(scene: PlanningScene, group: str, start: Mapping[str, float],
                constraints: Constraints, solver, deadline: float, rng: np.random.Generator,
-               wanted: int = GOAL_SAMPLES) -> Goals:
-    """Goal states of a position (and orientation) constraint, sampled by IK."""
+               wanted: int = GOAL_SAMPLES, path: Optional[ConstraintSet] = None) -> Goals:
+    """Goal states of a position (and orientation) constraint, sampled by IK; with
+    ``path``, only states that satisfy the path constraints too (MoveIt merges them into
+    each goal set: model_based_planning_context.cpp:597-611, mergeConstraints)."""
     if solver is None:
         raise GoalError(MoveItErrorCodes.PLANNING_FAILED,
                         f"group '{group}' has no kinematics solver: a pose goal cannot be "
@@ -210,6 +165,10 @@ def pose_goals(scene: PlanningScene, group: str, start: Mapping[str, float],
         goals.ik_solutions += 1
         state = dict(start, **solver.state(solution))
         if satisfied(scene, state, constraints) is not None:
+            continue
+        broken = path.decide(state) if path is not None else None
+        if broken is not None:
+            goals.violations.append(broken)
             continue
         hit = scene.contacts(state, group)
         if hit:

@@ -10,6 +10,13 @@ In order, as the pipeline runs:
   ``start_state_max_bounds_error`` is moved onto them (farther: START_STATE_INVALID);
   FixStartStateCollision: a start in collision is jiggled (``jiggle_fraction`` of each
   joint's range, 100 tries) to a free state nearby, else START_STATE_IN_COLLISION;
+- path constraints (:mod:`moveit_core.kinematic_constraints`, MoveIt's evaluation): a start
+  that breaks them is first planned onto them without them and the request planned from
+  there, the two paths joined (FixStartStatePathConstraints; when nothing reaches them,
+  START_STATE_VIOLATES_PATH_CONSTRAINTS); they are merged into every goal set (goal states
+  that break them are not used: when none is left, PLANNING_FAILED naming them), every
+  state checked while planning and every waypoint returned keeps them, and the search
+  grows towards states their constraint sampler draws (:mod:`constrained`);
 - each goal constraint set (alternatives) gives goal states (:mod:`goals`): a joint goal
   outside the bounds is INVALID_GOAL_CONSTRAINTS; a pose goal no IK reaches, or goals whose
   every state collides, are PLANNING_FAILED, as MoveIt's OMPL context answers every solve
@@ -39,9 +46,12 @@ from ompl import base as ob
 from ompl import geometric as og
 from ompl import util as ou
 
+from moveit_core.kinematic_constraints import ConstraintError, ConstraintSet
 from moveit_core.planning_scene import PlanningScene
 from moveit_core.robot_model import RobotModelError
 from moveit_core.time_parameterization import Timed, limits_of, time_path
+from moveit_planners_ompl.constrained import (ConstrainedSampler, planner_range, rrt_connect,
+                                              shortcut)
 from moveit_planners_ompl.goals import GOAL_SAMPLES, GoalError, Goals, joint_goal, pose_goals
 from moveit_planners_ompl.planner_configs import PlannerConfigs
 
@@ -121,7 +131,6 @@ class OmplPlanner:
                               "constraints")
         allowed = request.allowed_planning_time if request.allowed_planning_time > 0 \
             else DEFAULT_PLANNING_TIME
-        deadline = began + allowed
         self._plans += 1
         seed = (self.seed + self._plans) % MAX_SEED or 1
         rng = np.random.default_rng(seed)
@@ -129,53 +138,21 @@ class OmplPlanner:
         if isinstance(start, PlanResult):
             return start
         prefix, start = start
-        # one goal first (IK from the start: most often the straight line reaches it), more
-        # for the search when the line is blocked
-        goals = self._goals(scene, group_name, start, goals_given,
-                            began + allowed * GOAL_SHARE, rng, wanted=1)
-        if isinstance(goals, PlanResult):
-            goals.start = prefix
-            return goals
-        planning = self.configs.group(group_name, request.planner_id)
-        lows, highs = self._space_bounds(scene, joints)
-        goal_vectors = [np.clip([g[j] for j in joints], lows, highs) for g in goals]
-        start_vector = np.clip([start[j] for j in joints], lows, highs)
-        resolution = planning.longest_valid_segment_fraction * float(np.linalg.norm(highs - lows))
-
-        def valid(vector) -> bool:
-            return not scene.contacts(dict(start, **dict(zip(joints, vector))), group_name)
-
-        def motion_free(a, b, step) -> bool:
-            states, order = _motion_states(a, b, step)
-            return scene.first_collision(start, joints, states, group_name, order) is None
-
-        order = np.argsort([np.linalg.norm(g - start_vector) for g in goal_vectors])
-        path = None
-        fine = resolution / FINAL_CHECK_DIVISOR
-        for index in order:   # the straight line first (checked as finely as a found path)
-            if motion_free(start_vector, goal_vectors[index], fine):
-                path = [start_vector, goal_vectors[index]]
-                break
-        if path is None and len(goals) < GOAL_SAMPLES and any(
-                c.position_constraints or c.orientation_constraints for c in goals_given):
-            more = self._goals(scene, group_name, start, goals_given,
-                               began + allowed * GOAL_SHARE, rng)
-            if not isinstance(more, PlanResult):
-                goal_vectors += [np.clip([g[j] for j in joints], lows, highs) for g in more]
-        while path is None:
-            path = self._search(joints, lows, highs, start_vector, goal_vectors, planning,
-                                resolution, valid, max(0.05, deadline - time.monotonic()), seed)
-            if isinstance(path, PlanResult):
-                path.start = prefix
-                return path
-            if not all(motion_free(a, b, fine) for a, b in zip(path, path[1:])):
-                # a corner the planning resolution stepped over: search again checking
-                # motions as finely as the final check, while time is left
-                if time.monotonic() >= deadline or resolution <= fine:
-                    return PlanResult(Codes.INVALID_MOTION_PLAN, "the planned path collides "
-                                      "between the states the planner checked", prefix)
-                resolution, path = fine, None
-        dense = _interpolate(path, resolution)
+        try:
+            path_set = ConstraintSet(scene, request.path_constraints)
+        except ConstraintError as error:
+            return PlanResult(error.code, f"path_constraints: {error}", prefix)
+        path_set = None if path_set.empty else path_set
+        broken = path_set.decide(start) if path_set is not None else None
+        if broken is None:
+            dense = self._path(scene, request, joints, start, goals_given, path_set, began,
+                               allowed, rng, seed)
+        else:
+            dense = self._to_path_constraints(scene, request, joints, start, goals_given,
+                                              path_set, broken, allowed, rng, seed)
+        if isinstance(dense, PlanResult):
+            dense.start = prefix
+            return dense
         # the start as given leads the path whenever FixStartStateBounds moved it into its
         # bounds, by however little (moveit noetic-devel 7c0343f0, moveit_ros/planning/
         # planning_request_adapter_plugins/src/fix_start_state_bounds.cpp:145-152, 197); the
@@ -187,8 +164,128 @@ class OmplPlanner:
         timed = time_path(positions, velocity, acceleration,
                           request.max_velocity_scaling_factor,
                           request.max_acceleration_scaling_factor)
-        return PlanResult(Codes.SUCCESS, f"planned: {len(path)} vertices, "
+        return PlanResult(Codes.SUCCESS, f"planned: {len(dense)} waypoints, "
                           f"{timed.times[-1]:.2f} s", prefix, joints, timed)
+
+    def _to_path_constraints(self, scene, request, joints, start, goals_given, path_set,
+                             broken, allowed, rng, seed):
+        """FixStartStatePathConstraints (fix_start_state_path_constraints.cpp:70-128 on
+        noetic-devel): a start that breaks the path constraints is first moved, by a plan
+        without them, to a state that satisfies them; the request is planned from there and
+        the two paths joined. Each plan has the request's planning time; when the first
+        finds nothing the answer is START_STATE_VIOLATES_PATH_CONSTRAINTS."""
+        LOG.info("Path constraints not satisfied for start state (%s); planning to path "
+                 "constraints", broken)
+        try:
+            first = self._path(scene, request, joints, start, [request.path_constraints], None,
+                               time.monotonic(), allowed, rng, seed)
+        except GoalError as error:   # the path constraints are no goal one can sample
+            first = PlanResult(error.code, str(error))
+        if isinstance(first, PlanResult):
+            LOG.warning("Unable to plan to path constraints: %s", first.message)
+            return PlanResult(Codes.START_STATE_VIOLATES_PATH_CONSTRAINTS,
+                              f"the start state breaks the path constraints ({broken}) and no "
+                              f"plan reaches them: {first.message}")
+        LOG.info("Planned to path constraints. Resuming original planning request.")
+        reached = dict(start, **dict(zip(joints, (float(v) for v in first[-1]))))
+        second = self._path(scene, request, joints, reached, goals_given, path_set,
+                            time.monotonic(), allowed, rng, seed)
+        if isinstance(second, PlanResult):
+            return second
+        return first + second[1:]
+
+    def _path(self, scene, request, joints, start, goals_given, path_set, began, allowed, rng,
+              seed):
+        """The dense joint-space path from ``start`` to one of the goal sets (or a failed
+        PlanResult): goal states, the straight line when it is valid, else the search; every
+        state checked keeps the path constraints ``path_set`` (None: none) and is free."""
+        group_name = request.group_name
+        deadline = began + allowed
+        # one goal first (IK from the start: most often the straight line reaches it), more
+        # for the search when the line is blocked
+        goals = self._goals(scene, group_name, start, goals_given,
+                            began + allowed * GOAL_SHARE, rng, wanted=1, path=path_set)
+        if isinstance(goals, PlanResult):
+            return goals
+        planning = self.configs.group(group_name, request.planner_id)
+        lows, highs = self._space_bounds(scene, joints)
+        goal_vectors = [np.clip([g[j] for j in joints], lows, highs) for g in goals]
+        start_vector = np.clip([start[j] for j in joints], lows, highs)
+        resolution = planning.longest_valid_segment_fraction * float(np.linalg.norm(highs - lows))
+
+        def keeps(vector) -> bool:
+            return path_set is None or \
+                path_set.decide(dict(start, **dict(zip(joints, vector)))) is None
+
+        def valid(vector) -> bool:
+            return keeps(vector) and \
+                not scene.contacts(dict(start, **dict(zip(joints, vector))), group_name)
+
+        def motion_free(a, b, step) -> bool:
+            states, order = _motion_states(a, b, step)
+            if path_set is not None and not all(keeps(states[k]) for k in order):
+                return False
+            return scene.first_collision(start, joints, states, group_name, order) is None
+
+        order = np.argsort([np.linalg.norm(g - start_vector) for g in goal_vectors])
+        path = None
+        fine = resolution / FINAL_CHECK_DIVISOR
+        for index in order:   # the straight line first (checked as finely as a found path)
+            line = [start_vector, goal_vectors[index]]
+            if motion_free(*line, fine) and all(keeps(state) for state in
+                                                _interpolate(line, resolution)):
+                path = line
+                break
+        if path is None and len(goals) < GOAL_SAMPLES and any(
+                c.position_constraints or c.orientation_constraints for c in goals_given):
+            more = self._goals(scene, group_name, start, goals_given,
+                               began + allowed * GOAL_SHARE, rng, path=path_set)
+            if not isinstance(more, PlanResult):
+                goal_vectors += [np.clip([g[j] for j in joints], lows, highs) for g in more]
+        while path is None:
+            seconds = max(0.05, deadline - time.monotonic())
+            if path_set is None:
+                path = self._search(joints, lows, highs, start_vector, goal_vectors, planning,
+                                    resolution, valid, seconds, seed)
+            else:
+                path = self._constrained_search(scene, group_name, joints, start, lows, highs,
+                                                start_vector, goal_vectors, planning,
+                                                resolution, path_set, motion_free, seconds, rng)
+            if isinstance(path, PlanResult):
+                return path
+            dense = _interpolate(path, resolution)
+            if all(motion_free(a, b, fine) for a, b in zip(path, path[1:])) and \
+                    all(keeps(state) for state in dense):
+                return dense
+            # a corner the planning resolution stepped over: search again checking motions
+            # as finely as the final check, while time is left
+            if time.monotonic() >= deadline or resolution <= fine:
+                return PlanResult(Codes.INVALID_MOTION_PLAN, "the planned path collides or "
+                                  "breaks the path constraints between the states the "
+                                  "planner checked")
+            resolution, path = fine, None
+        return _interpolate(path, resolution)
+
+    def _constrained_search(self, scene, group, joints, start, lows, highs, start_vector,
+                            goal_vectors, planning, resolution, path_set, motion_free, seconds,
+                            rng):
+        """RRTConnect growing towards states the path constraints' sampler draws
+        (:mod:`constrained`), its path shortcut; a PlanResult when time runs out."""
+        deadline = time.monotonic() + seconds
+        sampler = ConstrainedSampler(path_set, scene.model, joints, start, lows, highs,
+                                     self._solver(group), rng)
+        step = planner_range(planning.parameters, lows, highs)
+        path = rrt_connect(start_vector, goal_vectors, sampler.sample,
+                           lambda a, b: motion_free(a, b, resolution), step, deadline)
+        if path is None:
+            return PlanResult(Codes.PLANNING_FAILED, f"RRTConnect under path constraints found "
+                              f"no path within {seconds:.2f} s ({sampler.constrained} "
+                              f"constrained and {sampler.uniform} uniform samples)")
+        # OMPL's simplifySolution gets what is left of the planning time, at most a quarter
+        # of it (as _search)
+        return shortcut(path, lambda a, b: motion_free(a, b, resolution), rng,
+                        time.monotonic() + max(0.01, min(seconds / 4,
+                                                         deadline - time.monotonic())))
 
     def _start(self, scene: PlanningScene, request, joints: Sequence[str]):
         """(the start as given, the start planned from) or a failed PlanResult."""
@@ -239,25 +336,36 @@ class OmplPlanner:
                 return trial
         return None
 
-    def _goals(self, scene, group, start, sets, deadline, rng, wanted=GOAL_SAMPLES):
+    def _goals(self, scene, group, start, sets, deadline, rng, wanted=GOAL_SAMPLES, path=None):
+        """Goal states of the sets; with ``path`` (a ConstraintSet) only those keeping the
+        path constraints (merged into each goal set, as MoveIt does)."""
         states, found = [], Goals()
         for constraints in sets:
             if constraints.joint_constraints and not (constraints.position_constraints or
                                                       constraints.orientation_constraints):
                 goal = joint_goal(scene, group, start, constraints, rng)
-                hit = scene.contacts(goal, group)
-                if hit:
+                broken = path.decide(goal) if path is not None else None
+                hit = scene.contacts(goal, group) if broken is None else []
+                if broken is not None:
+                    found.violations.append(broken)
+                elif hit:
                     found.collisions += hit
                 else:
                     states.append(goal)
                 continue
             sampled = pose_goals(scene, group, start, constraints,
-                                 self._solver(group), deadline, rng, wanted)
+                                 self._solver(group), deadline, rng, wanted, path)
             found.ik_solutions += sampled.ik_solutions
             found.collisions += sampled.collisions
+            found.violations += sampled.violations
             states += sampled.states
         if states:
             return states
+        if found.violations:
+            # the merged goal sets cannot be sampled: OMPL's goal tree stays empty and the
+            # solve fails (PLANNING_FAILED, as every failed solve here)
+            return PlanResult(Codes.PLANNING_FAILED, "every goal state breaks the path "
+                              f"constraints ({found.violations[0]})")
         if found.collisions:
             a, b = found.collisions[0]
             return PlanResult(Codes.PLANNING_FAILED, f"every goal state collides ({a} "

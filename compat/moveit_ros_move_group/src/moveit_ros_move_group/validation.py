@@ -9,10 +9,12 @@ joint, its limit and the value); nothing raises.
 - :func:`check_plan_request` (the ``move_group`` action, ``plan_kinematic_path``): goal
   constraints holding a non-finite value are INVALID_GOAL_CONSTRAINTS, start state positions
   holding one INVALID_ROBOT_STATE (the codes MoveIt's pipeline gives an unusable goal or
-  start). What the planner does not read is not checked (path and trajectory constraints,
-  workspace bounds; a start state's velocities and efforts, which a driver may publish as
-  NaN and a client copy from joint_states); a non-finite scaling factor means 1, as MoveIt's
-  time parameterization reads it.
+  start); path constraints holding one START_STATE_VIOLATES_PATH_CONSTRAINTS, what MoveIt
+  ends with (a comparison with NaN is false: no state satisfies them, not even one that
+  FixStartStatePathConstraints plans to). What the planner does not read is not checked
+  (trajectory constraints, workspace bounds; a start state's velocities and efforts, which
+  a driver may publish as NaN and a client copy from joint_states); a non-finite scaling
+  factor means 1, as MoveIt's time parameterization reads it.
 - :func:`check_trajectory` (``execute_trajectory``): a trajectory holding a non-finite value,
   or a point outside a joint's position limits, is INVALID_MOTION_PLAN; a point whose
   positions (velocities, accelerations, efforts) do not match the joint names is
@@ -98,13 +100,18 @@ def _walk(message, path: str, names: Optional[Sequence[str]]) -> Optional[str]:
 
 def check_plan_request(request, where: str = "request") -> None:
     """Raises :class:`Refused` for a MotionPlanRequest holding a non-finite value in what
-    the planner reads: its goal constraints or its start state's positions."""
+    the planner reads: its goal or path constraints or its start state's positions."""
     for index, constraints in enumerate(request.goal_constraints):
         found = non_finite(constraints, f"{where}.goal_constraints[{index}]")
         if found:
             raise Refused(Codes.INVALID_GOAL_CONSTRAINTS,
                           f"{_joint_of(constraints, found)}{found}: goal constraints must be "
                           "finite numbers (nothing was planned)")
+    found = non_finite(request.path_constraints, f"{where}.path_constraints")
+    if found:
+        raise Refused(Codes.START_STATE_VIOLATES_PATH_CONSTRAINTS,
+                      f"{_joint_of(request.path_constraints, found)}{found}: path constraints "
+                      "must be finite numbers (nothing was planned)")
     state = request.start_state.joint_state
     found = non_finite(JointState(name=state.name, position=state.position),
                        f"{where}.start_state.joint_state")
