@@ -8,15 +8,16 @@ damped least-squares step on the weighted error (``position_only_ik`` weighs the
 orientation by 0, as a 4-joint arm cannot take every orientation; ``orientation_vs_position``
 weighs it otherwise), the joints clipped to their bounds after every step. (KDL's own
 weighted solver, ChainIkSolverPos_LMA, takes its weights as an Eigen matrix, which Debian's
-PyKDL crashes on beside NumPy 2.) Configs naming other solvers (LMA, TRAC-IK, the cached
-plugin) get this solver: one line in the log says so (see SOLVER_NAMES).
+PyKDL crashes on beside NumPy 2.) Configs naming MoveIt's other built-in solvers (LMA, the
+cached and service plugins: SOLVER_NAMES) get this solver; which solver a group gets is
+:mod:`moveit_kinematics.solvers`' choice (C++ plugins through pluginlib, TRAC-IK on
+:mod:`moveit_kinematics.trac_ik`).
 
 The URDF is turned into a KDL chain as kdl_parser turns it (a segment per joint: the joint
 at its origin, its axis in the parent's frame). No ROS here.
 """
 from __future__ import annotations
 
-import logging
 import math
 import random
 import time
@@ -30,13 +31,9 @@ from moveit_core.robot_model import RobotModel, RobotModelError
 from urdf_tools import Joint
 from urdf_tools.kinematics import rpy_matrix
 
-# rospy shows the rosout.* loggers on the console and /rosout
-LOG = logging.getLogger("rosout.moveit_kinematics")
-
 # the plugins a kinematics.yaml names that this solver answers for
 KDL_PLUGIN = "kdl_kinematics_plugin/KDLKinematicsPlugin"
 SOLVER_NAMES = (KDL_PLUGIN, "lma_kinematics_plugin/LMAKinematicsPlugin",
-                "trac_ik_kinematics_plugin/TRAC_IKKinematicsPlugin",
                 "cached_ik_kinematics_plugin/CachedKDLKinematicsPlugin",
                 "srv_kinematics_plugin/SrvKinematicsPlugin")
 MAX_ITERATIONS = 30       # steps of one attempt before a restart from a random state
@@ -117,12 +114,6 @@ class KdlSolver:
         if not self.group.is_chain:
             raise RobotModelError(f"group '{group}' is not a chain: the KDL solver needs one "
                                   f"(its joints: {', '.join(self.group.joints)})")
-        if settings.kinematics_solver not in SOLVER_NAMES:
-            LOG.warning("group '%s' names kinematics solver '%s'; solving with KDL instead",
-                        group, settings.kinematics_solver)
-        elif settings.kinematics_solver != KDL_PLUGIN:
-            LOG.info("group '%s': '%s' is answered by KDL's solver (%s)", group,
-                     settings.kinematics_solver, KDL_PLUGIN)
         self.base, self.tip = self.group.base_link, self.group.tip_link
         self.chain = kdl.Chain()
         self.joints: List[str] = []
@@ -144,6 +135,9 @@ class KdlSolver:
         self._jacobian = kdl.Jacobian(len(self.joints))
         self._fk = kdl.ChainFkSolverPos_recursive(self.chain)
         self._random = random.Random(seed)
+        # when an attempt has converged (TRAC-IK's solver sets its epsilon here)
+        self.position_tolerance, self.orientation_tolerance = \
+            POSITION_TOLERANCE, ORIENTATION_TOLERANCE
 
     def forward(self, positions: Sequence[float]) -> np.ndarray:
         """The tip's pose in the base link's frame (4x4) for the chain's joints."""
@@ -193,8 +187,9 @@ class KdlSolver:
             self._fk.JntToCart(array, frame)
             twist = kdl.diff(frame, goal)          # in the base frame: (velocity, rotation)
             values = [twist[i] for i in range(6)]
-            if math.hypot(*values[:3]) < POSITION_TOLERANCE and (
-                    self.weight == 0.0 or math.hypot(*values[3:]) < ORIENTATION_TOLERANCE):
+            if math.hypot(*values[:3]) < self.position_tolerance and (
+                    self.weight == 0.0 or
+                    math.hypot(*values[3:]) < self.orientation_tolerance):
                 positions = [_into_bounds(b, v, turns)
                              for b, v, turns in zip(self.bounds, q, self.turns)]
                 return None if any(v is None for v in positions) else positions

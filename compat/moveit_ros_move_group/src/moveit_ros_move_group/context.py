@@ -13,7 +13,7 @@ import numpy as np
 
 from moveit_core import robot_model
 from moveit_core.robot_model import RobotModel, RobotModelError
-from moveit_kinematics.kdl_solver import KdlSolver, SolverSettings
+from moveit_kinematics.solvers import Solver, load_solver
 from moveit_ros_move_group.state_monitor import CurrentState
 
 # rospy shows the rosout.* loggers on the console and /rosout
@@ -29,15 +29,20 @@ class MoveGroupContext:
     model: RobotModel
     kinematics: Mapping[str, Mapping] = field(default_factory=dict)  # by group
     state: Optional[CurrentState] = None
-    _solvers: Dict[str, Optional[KdlSolver]] = field(default_factory=dict)
+    # the descriptions the model was built from: C++ kinematics plugins build theirs from them
+    urdf: str = ""
+    srdf: str = ""
+    _solvers: Dict[str, Optional[Solver]] = field(default_factory=dict)
 
     def __post_init__(self):
         if self.state is None:
             self.state = CurrentState(self.model.default_positions())
 
-    def solver(self, group: str) -> KdlSolver:
-        """The group's kinematics solver; RobotModelError when the group has none (no
-        entry in robot_description_kinematics, or not a chain) or does not exist."""
+    def solver(self, group: str) -> Solver:
+        """The group's kinematics solver (:func:`moveit_kinematics.solvers.load_solver`'s
+        choice: a C++ plugin through pluginlib, TRAC-IK's or KDL's); RobotModelError when the
+        group has none (no entry in robot_description_kinematics, or not a chain) or does
+        not exist."""
         self.model.group(group)
         if group not in self._solvers:
             entry = self.kinematics.get(group)
@@ -45,8 +50,8 @@ class MoveGroupContext:
                 self._solvers[group] = None
             else:
                 try:
-                    self._solvers[group] = KdlSolver(self.model, group,
-                                                     SolverSettings.from_parameters(entry))
+                    self._solvers[group] = load_solver(self.model, group, entry,
+                                                       self.urdf, self.srdf)
                 except (RobotModelError, TypeError) as error:
                     LOG.error("group '%s' gets no kinematics solver: %s", group, error)
                     self._solvers[group] = None
@@ -86,7 +91,19 @@ def from_parameters(get_param) -> MoveGroupContext:
         raise ContextError(f"the robot model cannot be built: {error}") from error
     for warning in model.srdf.warnings:
         LOG.warning(warning)
-    return MoveGroupContext(model, kinematics if isinstance(kinematics, dict) else {})
+    context = MoveGroupContext(model, kinematics if isinstance(kinematics, dict) else {},
+                               urdf=str(urdf), srdf=str(srdf))
+    # the solvers are loaded as move_group starts, as MoveIt's RobotModelLoader loads the
+    # kinematics plugins of every group that robot_description_kinematics names
+    # (robot_model_loader.cpp, loadKinematicsSolvers): a plugin that cannot be loaded is
+    # named in the log before the first request
+    for group in context.kinematics:
+        if group in model.groups:
+            try:
+                context.solver(group)
+            except RobotModelError:
+                pass    # logged by solver(); requests for the group are refused
+    return context
 
 
 def _optional(get_param, name, default):
