@@ -18,15 +18,21 @@ BATCHES = {
     "files_and_world": (("layout", "world"),
                         ("xacro_named_otherwise", "world_models_named_otherwise",
                          "yaml_loaded_the_old_way")),
-    "flip": (("layout", "flip"),
-             ("paused_flip_by_hand", "flip_node_found_by_name", "flip_started_by_the_launch",
-              "robot_in_its_own_launch")),
+    "flip": (("layout", "flip"), ("paused_flip_by_hand", "flip_started_by_the_launch")),
     "arm": (("layout", "arm_test", "step"), ("arm_move_written_otherwise",
                                               "arm_readme_says_use_fake")),
 }
-# graded by make soak (test/soak/test_course_grader_hw3_soak.py), to keep make test within
-# its 15 minutes: four flip fixtures are two rounds of two jobs, five were three
-SOAK_ONLY = ("nodes_not_executable",)
+# graded by make soak (test/soak/test_course_grader_hw3_soak.py, which checks their reports'
+# notes too), to keep make test within its 15 minutes: two flip fixtures are one round of two
+# jobs (44 s on a fresh clone), four were two; the two left here are the flip node started
+# by hand in a paused world and by the student's launch, the two ways the others combine
+SOAK_ONLY = ("nodes_not_executable", "flip_node_found_by_name", "robot_in_its_own_launch")
+# what the report of a flip fixture graded by make soak must say about how it was run
+SOAK_NOTES = {
+    "flip_node_found_by_name": ("flips", "'rosrun diff_drive flipper'"),
+    "robot_in_its_own_launch": ("flips", "the robot was spawned by 'roslaunch diff_drive "
+                                         "robot.launch' after it"),
+}
 RESULTS = os.path.join("test_results", "e2e", "course_grader", "calibration_hw3")
 
 
@@ -76,14 +82,9 @@ def test_the_report_says_how_the_submission_was_run(batches):
     paused = flip.items("paused_flip_by_hand")["flips"]
     assert any("the world started paused" in n for n in notes(paused)), notes(paused)
     assert any("'rosrun diff_drive flip'" in n for n in notes(paused)), notes(paused)
-    by_name = flip.items("flip_node_found_by_name")["flips"]
-    assert any("'rosrun diff_drive flipper'" in n for n in notes(by_name)), notes(by_name)
     by_launch = flip.items("flip_started_by_the_launch")["flips"]
     assert any("ddrive.launch starts diff_drive/flip itself, so nothing was started by hand"
                in n for n in notes(by_launch)), notes(by_launch)
-    own = flip.items("robot_in_its_own_launch")["flips"]
-    assert any("the robot was spawned by 'roslaunch diff_drive robot.launch' after it" in n
-               for n in notes(own)), notes(own)
     fake = batches["arm"].items("arm_readme_says_use_fake")["step_floor_error"]
     assert any("roslaunch arm_move arm.launch use_fake:=true" in n for n in notes(fake)), \
         notes(fake)
