@@ -277,13 +277,17 @@ class PlanningScene:
         if not scene.is_diff:
             trial.objects.clear()
             trial.attached.clear()
+        # in MoveIt's order (PlanningScene::setPlanningSceneDiffMsg, planning_scene.cpp:1286-1310
+        # on noetic-devel): the robot state with its attached objects, then the world's objects,
+        # so that an object a diff detaches (back into the world) is removed by the same diff's
+        # world REMOVE, as PlanningSceneInterface::clear() relies on
         state = scene.robot_state.joint_state
         trial.set_state(dict(zip(state.name, state.position)))
-        for message in scene.world.collision_objects:
-            trial.apply_collision_object(message)
         for message in scene.robot_state.attached_collision_objects:
             trial.apply_attached_object(message)
         _apply_matrix(trial.acm, scene.allowed_collision_matrix)
+        for message in scene.world.collision_objects:
+            trial.apply_collision_object(message)
         self.objects, self.attached, self.acm, self.positions = \
             trial.objects, trial.attached, trial.acm, trial.positions
 

@@ -111,3 +111,22 @@ def test_a_scene_message_is_all_or_nothing(scene):
     assert [o.id for o in names] == ["a"] and names[0].primitives == []
     scene.apply(SceneMsg(is_diff=False))          # a full scene without objects
     assert scene.objects == {}
+
+
+def test_a_diff_removing_everything_removes_attached_objects_too(scene):
+    """PlanningSceneInterface::clear()'s diff (planning_scene_interface.cpp:290-301): an
+    attached REMOVE and a world REMOVE, both without an id. The robot state's attached
+    objects are applied first (planning_scene.cpp:1286-1310), so the detached one, back in
+    the world, goes with the world's REMOVE."""
+    scene.apply_collision_object(box("cube", gripper_position(scene), size=(0.02, 0.02, 0.02)))
+    scene.apply_collision_object(box("wall", (0.0, 0.3, 0.1)))
+    attach = AttachedCollisionObject(link_name=GRIPPER)
+    attach.object.id = "cube"
+    scene.apply_attached_object(attach)
+    clear = SceneMsg(is_diff=True)
+    clear.robot_state.is_diff = True
+    clear.robot_state.attached_collision_objects = [AttachedCollisionObject(
+        object=CollisionObject(operation=CollisionObject.REMOVE))]
+    clear.world.collision_objects = [CollisionObject(operation=CollisionObject.REMOVE)]
+    scene.apply(clear)
+    assert scene.objects == {} and scene.attached == {}
