@@ -8,7 +8,8 @@ the plugin named in robot_description_kinematics.
 - move_group's log names the plugin loaded; 100 compute_ik requests for the tool poses of
   random states (urdf_tools' forward kinematics, apart from the plugin's) are each answered
   by the plugin (its log line per solved request) with joints whose forward kinematics is
-  the pose to 1e-6 m and 1e-6 rad; a pose goal is planned through it.
+  the pose to 1e-6 m and 1e-6 rad; a collision-aware request (the scene's check as the
+  plugin's solution callback), a pose goal and a Cartesian path are solved through it.
 - a kinematics.yaml naming a plugin that is not installed: move_group says why and solves
   with KDL; a plugin whose initialize() refuses the group (a tip it was not written for):
   the same, with that reason.
@@ -45,6 +46,9 @@ SERVICE_LIMIT = 30.0
 IK_TIMEOUT = 0.05          # s per compute_ik request
 PLANNING_TIME = 5.0        # s for the pose goal
 SUCCESS = 1                # moveit_msgs/MoveItErrorCodes
+READY = [0.0, 0.4, 0.8, 0.3, 0.5, 0.0]   # the config's "ready" (collision-free)
+CARTESIAN_DROP = 0.05      # m: the Cartesian path's straight line down
+CARTESIAN_STEP = 0.01      # m: its max_step
 
 
 @pytest.fixture(scope="module")
@@ -100,7 +104,7 @@ def tool_pose(urdf, joints):
     return link_transform(urdf, "base_link", "tool0", dict(zip(JOINTS, joints)))
 
 
-def compute_ik(service, matrix, seed):
+def compute_ik(service, matrix, seed, avoid_collisions=False):
     """compute_ik for the tool at ``matrix`` (base_link); the group's joints or None."""
     from moveit_msgs.msg import PositionIKRequest
     import rospy
@@ -108,7 +112,7 @@ def compute_ik(service, matrix, seed):
     request.group_name = "manipulator"
     request.robot_state.joint_state.name = JOINTS
     request.robot_state.joint_state.position = seed
-    request.avoid_collisions = False
+    request.avoid_collisions = avoid_collisions
     request.pose_stamped.header.frame_id = "base_link"
     request.pose_stamped.pose = pose_message(matrix)
     request.timeout = rospy.Duration(IK_TIMEOUT)
@@ -130,7 +134,7 @@ def pose_goal_request(matrix):
     request.num_planning_attempts = 1
     request.allowed_planning_time = PLANNING_TIME
     request.start_state.joint_state.name = JOINTS
-    request.start_state.joint_state.position = [0.0, 0.4, 0.8, 0.3, 0.5, 0.0]
+    request.start_state.joint_state.position = READY
     position = PositionConstraint()
     position.header.frame_id = "base_link"
     position.link_name = "tool0"
@@ -150,6 +154,22 @@ def pose_goal_request(matrix):
     return request
 
 
+def cartesian_request(start, end):
+    """A straight line of the tool from its pose at ``start`` to ``end`` (base_link)."""
+    from moveit_msgs.srv import GetCartesianPathRequest
+    request = GetCartesianPathRequest()
+    request.header.frame_id = "base_link"
+    request.group_name = "manipulator"
+    request.link_name = "tool0"
+    request.start_state.joint_state.name = JOINTS
+    request.start_state.joint_state.position = start
+    request.waypoints = [pose_message(end)]
+    request.max_step = CARTESIAN_STEP
+    request.jump_threshold = 0.0
+    request.avoid_collisions = True
+    return request
+
+
 def solved_lines(launch):
     return launch.output().count(SOLVED_LINE)
 
@@ -160,7 +180,7 @@ def test_move_group_answers_ik_and_pose_goals_with_the_ikfast_plugin(overlay, ro
     env = environment(overlay_env, ros_env)
     monkeypatch.setenv("ROS_MASTER_URI", env["ROS_MASTER_URI"])
     import rospy
-    from moveit_msgs.srv import GetMotionPlan, GetPositionIK
+    from moveit_msgs.srv import GetCartesianPath, GetMotionPlan, GetPositionIK
     urdf = load_urdf(str(workspace / "src" / "six_axis_arm_description" / "urdf" /
                          "six_axis_arm.urdf"))
     with headless.roslaunch(["six_axis_arm_ikfast_manipulator_plugin", "demo.launch",
@@ -200,6 +220,30 @@ def test_move_group_answers_ik_and_pose_goals_with_the_ikfast_plugin(overlay, ro
         assert rotation_angle(reached, goal) <= REACHED_RADIANS
         headless.wait_until(lambda: solved_lines(launch) > before, LOG_LIMIT,
                             "the pose goal's IK by the plugin in move_group's log")
+
+        # collision-aware IK: move_group's scene check is the plugin's solution callback
+        before = solved_lines(launch)
+        wanted = tool_pose(urdf, READY)
+        solution = compute_ik(service, wanted, [0.0] * len(JOINTS), avoid_collisions=True)
+        assert solution is not None
+        reached = tool_pose(urdf, solution)
+        assert np.linalg.norm(reached[:3, 3] - wanted[:3, 3]) <= SAME_POSE
+        assert rotation_angle(reached, wanted) <= SAME_POSE
+
+        # a Cartesian path: each step's IK by the plugin, nearest the step before
+        end = wanted.copy()
+        end[2, 3] -= CARTESIAN_DROP
+        cartesian = rospy.ServiceProxy("/compute_cartesian_path", GetCartesianPath)
+        path = cartesian(cartesian_request(READY, end))
+        assert path.error_code.val == SUCCESS and path.fraction == pytest.approx(1.0)
+        points = path.solution.joint_trajectory.points
+        names = list(path.solution.joint_trajectory.joint_names)
+        last = tool_pose(urdf, [points[-1].positions[names.index(j)] for j in JOINTS])
+        assert np.linalg.norm(last[:3, 3] - end[:3, 3]) <= SAME_POSE
+        assert rotation_angle(last, end) <= SAME_POSE
+        steps = round(CARTESIAN_DROP / CARTESIAN_STEP)
+        headless.wait_until(lambda: solved_lines(launch) >= before + 1 + steps, LOG_LIMIT,
+                            "the IK of each Cartesian step by the plugin in move_group's log")
 
 
 def test_a_plugin_that_is_not_installed_falls_back_to_kdl_with_the_reason(overlay, ros_env,
