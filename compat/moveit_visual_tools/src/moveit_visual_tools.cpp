@@ -26,6 +26,9 @@ const std::size_t ROBOT_STATE_QUEUE_SIZE = 1;
 const double TRAJECTORY_LINE_RADIUS = 0.005;
 // An untimed DisplayTrajectory lasts this long a waypoint in rviz (l. 1273-1276)
 const double RVIZ_SECONDS_PER_WAYPOINT = 0.05;
+// A RobotTrajectory without times is shown this many seconds a waypoint ("1 hz" in the comment, i * 2 in the code:
+// l. 1213-1223)
+const double UNTIMED_WAYPOINT_SECONDS = 2.0;
 // A blocking publishTrajectoryPath checks ROS every so often while waiting (l. 1281)
 const double ANIMATION_CHECK_INTERVAL = 0.25;
 // showJointLimits draws a joint's range in this many steps (l. 1592)
@@ -570,6 +573,108 @@ bool MoveItVisualTools::publishTrajectoryLine(const moveit_msgs::RobotTrajectory
   for (const moveit::core::LinkModel* tip : tips)
   {
     if (!publishTrajectoryLine(trajectory_msg, tip, arm_jmg, color))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool MoveItVisualTools::publishTrajectoryPath(const robot_trajectory::RobotTrajectoryPtr& trajectory, bool blocking)
+{
+  return publishTrajectoryPath(*trajectory, blocking);
+}
+
+bool MoveItVisualTools::publishTrajectoryPath(const robot_trajectory::RobotTrajectory& trajectory, bool blocking)
+{
+  // The message of the trajectory, started at its first waypoint; when the second point has no time the points are
+  // spread UNTIMED_WAYPOINT_SECONDS apart (l. 1208-1231)
+  moveit_msgs::RobotTrajectory trajectory_msg;
+  trajectory.getRobotTrajectoryMsg(trajectory_msg);
+  std::vector<trajectory_msgs::JointTrajectoryPoint>& points = trajectory_msg.joint_trajectory.points;
+  if (points.size() > 1 && points[1].time_from_start == ros::Duration(0))
+  {
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      points[i].time_from_start = ros::Duration(UNTIMED_WAYPOINT_SECONDS * static_cast<double>(i));
+    }
+  }
+  moveit_msgs::RobotState start_msg;
+  if (!trajectory.empty())
+  {
+    moveit::core::robotStateToRobotStateMsg(trajectory.getFirstWayPoint(), start_msg);
+  }
+  return publishTrajectoryPath(trajectory_msg, start_msg, blocking);
+}
+
+bool MoveItVisualTools::publishTrajectoryLine(const robot_trajectory::RobotTrajectoryPtr& robot_trajectory,
+                                              const moveit::core::LinkModel* ee_parent_link,
+                                              const rviz_visual_tools::colors& color)
+{
+  return publishTrajectoryLine(*robot_trajectory, ee_parent_link, color);
+}
+
+bool MoveItVisualTools::publishTrajectoryLine(const robot_trajectory::RobotTrajectory& robot_trajectory,
+                                              const moveit::core::LinkModel* ee_parent_link,
+                                              const rviz_visual_tools::colors& color)
+{
+  // The link's pose in each waypoint, a MEDIUM sphere there and 5 mm cylinders between (l. 1333-1367)
+  if (!ee_parent_link)
+  {
+    ROS_FATAL_STREAM_NAMED(LOGNAME, "ee_parent_link is NULL");
+    return false;
+  }
+  EigenSTL::vector_Vector3d path;
+  for (std::size_t i = 0; i < robot_trajectory.getWayPointCount(); ++i)
+  {
+    const moveit::core::RobotState& waypoint = robot_trajectory.getWayPoint(i);
+    // the link may come from another model of the same robot: the waypoint's link of that name
+    const moveit::core::LinkModel* link = waypoint.getRobotModel()->getLinkModel(ee_parent_link->getName());
+    if (!link)
+    {
+      ROS_ERROR_STREAM_NAMED(LOGNAME, "Link '" << ee_parent_link->getName() << "' is not in the trajectory's model '"
+                                               << waypoint.getRobotModel()->getName() << "'");
+      return false;
+    }
+    const Eigen::Isometry3d& tip_pose = waypoint.getGlobalLinkTransform(link);
+    if (std::isnan(tip_pose.translation().x()))
+    {
+      ROS_ERROR_STREAM_NAMED(LOGNAME, "NAN DETECTED AT TRAJECTORY POINT i=" << i);
+      return false;
+    }
+    path.push_back(tip_pose.translation());
+    publishSphere(tip_pose, color, rviz_visual_tools::MEDIUM);
+  }
+  publishPath(path, color, TRAJECTORY_LINE_RADIUS);
+  return true;
+}
+
+bool MoveItVisualTools::publishTrajectoryLine(const robot_trajectory::RobotTrajectoryPtr& robot_trajectory,
+                                              const moveit::core::JointModelGroup* arm_jmg,
+                                              const rviz_visual_tools::colors& color)
+{
+  return publishTrajectoryLine(*robot_trajectory, arm_jmg, color);
+}
+
+bool MoveItVisualTools::publishTrajectoryLine(const robot_trajectory::RobotTrajectory& robot_trajectory,
+                                              const moveit::core::JointModelGroup* arm_jmg,
+                                              const rviz_visual_tools::colors& color)
+{
+  // Each end-effector tip of the group (l. 1403-1428)
+  if (!arm_jmg)
+  {
+    ROS_FATAL_STREAM_NAMED(LOGNAME, "arm_jmg is NULL");
+    return false;
+  }
+  std::vector<const moveit::core::LinkModel*> tips;
+  if (!arm_jmg->getEndEffectorTips(tips) || tips.empty())
+  {
+    ROS_ERROR_STREAM_NAMED(LOGNAME, "Unable to get end effector tips from jmg");
+    return false;
+  }
+  for (const moveit::core::LinkModel* tip : tips)
+  {
+    if (!publishTrajectoryLine(robot_trajectory, tip, color))
     {
       return false;
     }

@@ -7,11 +7,14 @@
 // Parameters: ~group (the planning group), ~trajectory (a flat list of the group's positions,
 // one waypoint after another), ~tip_link (the link traced) or ~by_group (true: trace the
 // group's end-effector tips, as Interbotix's interbotix_moveit_interface does), ~base_frame
-// (the markers' frame; the model's root link by default).
+// (the markers' frame; the model's root link by default), ~robot_trajectory (true: the line and
+// the path published from a robot_trajectory::RobotTrajectory of the same waypoints, over the
+// model's default state, instead of the message).
 #include <ros/ros.h>
 
 #include <moveit/robot_model_loader/robot_model_loader.h>
 #include <moveit/robot_state/robot_state.h>
+#include <moveit/robot_trajectory/robot_trajectory.h>
 #include <moveit_visual_tools/moveit_visual_tools.h>
 
 #include <string>
@@ -52,10 +55,12 @@ int main(int argc, char** argv)
   std::string tip_link;
   std::string base_frame;
   bool by_group = false;
+  bool use_robot_trajectory = false;
   std::vector<double> flat_trajectory;
   private_nh.param<std::string>("group", group_name, "manipulator");
   private_nh.param<std::string>("tip_link", tip_link, "tool0");
   private_nh.param("by_group", by_group, false);
+  private_nh.param("robot_trajectory", use_robot_trajectory, false);
   private_nh.getParam("trajectory", flat_trajectory);
 
   robot_model_loader::RobotModelLoader robot_model_loader("robot_description");
@@ -115,19 +120,32 @@ int main(int argc, char** argv)
     point.time_from_start = ros::Duration(static_cast<double>(start / dof));
     trajectory.joint_trajectory.points.push_back(point);
   }
-  const bool traced = by_group ?
-                          visual_tools.publishTrajectoryLine(trajectory, joint_model_group) :
-                          visual_tools.publishTrajectoryLine(trajectory, robot_model->getLinkModel(tip_link),
-                                                             joint_model_group);
+  moveit::core::RobotState start_state(robot_model);
+  start_state.setToDefaultValues();
+  auto robot_trajectory = std::make_shared<robot_trajectory::RobotTrajectory>(robot_model, group_name);
+  robot_trajectory->setRobotTrajectoryMsg(start_state, trajectory);
+  bool traced = false;
+  if (use_robot_trajectory)
+  {
+    traced = by_group ? visual_tools.publishTrajectoryLine(robot_trajectory, joint_model_group) :
+                        visual_tools.publishTrajectoryLine(robot_trajectory, robot_model->getLinkModel(tip_link));
+  }
+  else
+  {
+    traced = by_group ? visual_tools.publishTrajectoryLine(trajectory, joint_model_group) :
+                        visual_tools.publishTrajectoryLine(trajectory, robot_model->getLinkModel(tip_link),
+                                                           joint_model_group);
+  }
   if (!traced)
   {
     ROS_ERROR("visual_tools_demo: publishTrajectoryLine failed");
     return 1;
   }
 
-  moveit::core::RobotState start_state(robot_model);
-  start_state.setToDefaultValues();
-  visual_tools.publishTrajectoryPath(trajectory, start_state);
+  if (use_robot_trajectory)
+    visual_tools.publishTrajectoryPath(*robot_trajectory);
+  else
+    visual_tools.publishTrajectoryPath(trajectory, start_state);
   visual_tools.publishRobotState(trajectory.joint_trajectory.points.back().positions, joint_model_group, rvt::ORANGE);
   visual_tools.trigger();
 

@@ -27,10 +27,9 @@
 // and contact-point markers (loadEEMarker, publishEEMarkers, publishGrasps,
 // publishAnimatedGrasps, checkAndPublishCollision, publishContactPoints) need the links' collision
 // geometry, which this moveit_core does not model: not declared. imarker_robot_state.h and
-// imarker_end_effector.h stop with #error. The overloads of publishTrajectoryPath and
-// publishTrajectoryLine taking a robot_trajectory::RobotTrajectory are not declared: this
-// moveit_core does not provide RobotTrajectory yet (its header stops with #error); pass the
-// moveit_msgs::RobotTrajectory of a MoveGroupInterface::Plan, as MoveIt's tutorial does.
+// imarker_end_effector.h stop with #error. publishTrajectoryPath and publishTrajectoryLine also
+// take a robot_trajectory::RobotTrajectory (or its Ptr), as upstream's overloads do
+// (moveit_visual_tools.cpp l. 1203-1231, 1326-1428 on noetic-devel).
 #ifndef MOVEIT_VISUAL_TOOLS_MOVEIT_VISUAL_TOOLS_H
 #define MOVEIT_VISUAL_TOOLS_MOVEIT_VISUAL_TOOLS_H
 
@@ -44,6 +43,7 @@
 #include <moveit/robot_model/robot_model.h>
 #include <moveit/robot_model_loader/robot_model_loader.h>
 #include <moveit/robot_state/robot_state.h>
+#include <moveit/robot_trajectory/robot_trajectory.h>
 
 #include <moveit_msgs/AttachedCollisionObject.h>
 #include <moveit_msgs/CollisionObject.h>
@@ -201,6 +201,10 @@ public:
   bool publishTrajectoryPath(const moveit_msgs::RobotTrajectory& trajectory_msg,
                              const moveit_msgs::RobotState& robot_state, bool blocking = false);
   void publishTrajectoryPath(const moveit_msgs::DisplayTrajectory& display_trajectory_msg);
+  /** \brief The trajectory's message from its first waypoint; a trajectory without times is shown
+   *         at 2 s per waypoint (upstream's "1 hz") */
+  bool publishTrajectoryPath(const robot_trajectory::RobotTrajectoryPtr& trajectory, bool blocking = false);
+  bool publishTrajectoryPath(const robot_trajectory::RobotTrajectory& trajectory, bool blocking = false);
 
   /**
    * \brief The path of a link through a trajectory: a sphere (namespace "Sphere") at each
@@ -215,6 +219,19 @@ public:
                              const moveit::core::JointModelGroup* arm_jmg,
                              const rviz_visual_tools::colors& color = rviz_visual_tools::LIME_GREEN);
   bool publishTrajectoryLine(const moveit_msgs::RobotTrajectory& trajectory_msg,
+                             const moveit::core::JointModelGroup* arm_jmg,
+                             const rviz_visual_tools::colors& color = rviz_visual_tools::LIME_GREEN);
+  /** \brief The same line from a RobotTrajectory's waypoints (their own forward kinematics) */
+  bool publishTrajectoryLine(const robot_trajectory::RobotTrajectoryPtr& robot_trajectory,
+                             const moveit::core::LinkModel* ee_parent_link,
+                             const rviz_visual_tools::colors& color = rviz_visual_tools::LIME_GREEN);
+  bool publishTrajectoryLine(const robot_trajectory::RobotTrajectory& robot_trajectory,
+                             const moveit::core::LinkModel* ee_parent_link,
+                             const rviz_visual_tools::colors& color = rviz_visual_tools::LIME_GREEN);
+  bool publishTrajectoryLine(const robot_trajectory::RobotTrajectoryPtr& robot_trajectory,
+                             const moveit::core::JointModelGroup* arm_jmg,
+                             const rviz_visual_tools::colors& color = rviz_visual_tools::LIME_GREEN);
+  bool publishTrajectoryLine(const robot_trajectory::RobotTrajectory& robot_trajectory,
                              const moveit::core::JointModelGroup* arm_jmg,
                              const rviz_visual_tools::colors& color = rviz_visual_tools::LIME_GREEN);
 
