@@ -10,9 +10,19 @@ RealSense box of arm_move's scene in its planning scene.
                          95th percentile) and the share planned
   IK                     the group's KDL solver (Interbotix's kinematics.yaml) on the same
                          targets, in this process: ms per call (median)
+  C++ client             MoveGroupInterface::plan (moveit_ros_planning_interface's plan_timing)
+                         against moveit_commander's plan() (plan_timing.py), the same named
+                         targets in turn from Sleep, each client run twice, alternately: per
+                         plan, the wall ms beyond the planning time move_group reports (the
+                         client, the transport and move_group's own work); the C++ client's
+                         median of it, and that median minus the Python client's.
+                         move_group waits for a joint_states message newer than each plan
+                         request (move_action_capability.cpp:67): meanwhile this publishes the
+                         arm's state at CLIENT_STATE_RATE, so the wait is under a millisecond
 """
 from __future__ import annotations
 
+import json
 import os
 import subprocess
 import sys
@@ -24,6 +34,8 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 import headless  # noqa: E402  (tools/ is not a package)
 
+HERE = os.path.dirname(os.path.abspath(__file__))
+
 TARGETS = 200
 START_LIMIT = 60.0        # s (wall): the longest move_group may take to answer
 ARM = ["waist", "shoulder", "elbow", "wrist_angle"]
@@ -31,6 +43,11 @@ TIP = "px100/ee_gripper_link"
 # arm_move's scene (config/scene.yaml), in the arm's base frame
 TABLE = ((0.8, 1.0, 0.75), (0.2, 0.0, -0.375))
 REALSENSE = ((0.14, 0.09, 0.05), (0.16, -0.17, 0.025))
+CLIENT_TARGETS = ["Home", "Upright"]      # the px100's named states (its SRDF)
+CLIENT_PLANS = 20          # plans per client run; each client runs CLIENT_RUNS times
+CLIENT_RUNS = 2
+CLIENT_STATE_RATE = 1000.0  # Hz: joint_states while the clients plan
+CLIENT_LIMIT = 120.0       # s (wall): the longest one client run may take
 
 
 def _box(name, size, centre):
@@ -94,6 +111,49 @@ def _request(model, start, pose):
     return request
 
 
+def _client_run(command: List[str], env: Dict[str, str], log) -> List[float]:
+    """One client's plans: the wall ms of each beyond move_group's planning time (each
+    must have planned)."""
+    done = subprocess.run(command, env=env, capture_output=True, text=True,
+                          timeout=CLIENT_LIMIT, check=False)
+    log.write(f"$ {' '.join(command)}\n{done.stdout}{done.stderr}\n")
+    lines = [json.loads(line) for line in done.stdout.splitlines() if line.startswith("{")]
+    assert done.returncode == 0 and len(lines) == CLIENT_PLANS, done.stdout + done.stderr
+    assert all(line["planned"] for line in lines), done.stdout
+    return [line["wall_ms"] - line["planning_ms"] for line in lines]
+
+
+def _clients(env: Dict[str, str], log_path: str) -> Dict[str, float]:
+    """The C++ and the Python client planning the same targets on move_group (px100)."""
+    import rospy
+    from sensor_msgs.msg import JointState
+    heard = rospy.wait_for_message("/px100/joint_states", JointState, timeout=START_LIMIT)
+    publisher = rospy.Publisher("/px100/joint_states", JointState, queue_size=1)
+
+    def publish(_):
+        heard.header.stamp = rospy.Time.now()
+        publisher.publish(heard)
+    timer = rospy.Timer(rospy.Duration(1.0 / CLIENT_STATE_RATE), publish)
+    client_env = dict(env, ROS_NAMESPACE="px100")
+    for node in ("plan_timing_cpp", "plan_timing_py"):
+        rospy.set_param(f"/px100/{node}/group", "interbotix_arm")
+        rospy.set_param(f"/px100/{node}/targets", CLIENT_TARGETS)
+        rospy.set_param(f"/px100/{node}/count", CLIENT_PLANS)
+    commands = {"cpp": ["rosrun", "moveit_ros_planning_interface", "plan_timing"],
+                "py": ["python3", os.path.join(HERE, "plan_timing.py")]}
+    beyond: Dict[str, List[float]] = {"cpp": [], "py": []}
+    try:
+        with open(log_path, "a", encoding="utf-8") as log:
+            for _ in range(CLIENT_RUNS):
+                for client, command in commands.items():
+                    beyond[client] += _client_run(command, client_env, log)
+    finally:
+        timer.shutdown()
+        publisher.unregister()
+    cpp, py = float(np.median(beyond["cpp"])), float(np.median(beyond["py"]))
+    return {"cpp_beyond_planning": cpp, "py_beyond_planning": py, "cpp_added": cpp - py}
+
+
 def measure(env: Dict[str, str], log_path: str) -> Dict[str, float]:
     import rospy
     from moveit_msgs.msg import MoveItErrorCodes, PlanningScene
@@ -149,10 +209,11 @@ def measure(env: Dict[str, str], log_path: str) -> Dict[str, float]:
                 start = dict(zip(answer.trajectory.joint_trajectory.joint_names,
                                  points[-1].positions))
         del ik
-    return {"up": up, "median": 1000 * float(np.median(seconds)),
-            "p95": 1000 * float(np.percentile(seconds, 95)),
-            "success": 100.0 * planned / TARGETS,
-            "ik": 1000 * float(np.median(ik_seconds))}
+        clients = _clients(env, log_path + ".clients")
+    return dict(clients, up=up, median=1000 * float(np.median(seconds)),
+                p95=1000 * float(np.percentile(seconds, 95)),
+                success=100.0 * planned / TARGETS,
+                ik=1000 * float(np.median(ik_seconds)))
 
 
 if __name__ == "__main__":
