@@ -28,6 +28,10 @@ README's "Speed"):
   order, at most ``COALESCE`` later, and is woken once for them. A step that takes longer
   than that (a slow scene) writes its message at once, and the loop writes what is pending
   before it sleeps (paced) or pauses (:meth:`ClockPublisher.flush`).
+- What the loop asks at every step must not take rospy's locks: whether a topic has
+  subscribers is read from the publisher's list of connections (:func:`has_connections`,
+  0.1 us against 0.5 for ``get_num_connections``), and rospy's time is made without
+  ``rospy.Time``'s argument checks (:func:`ros_time`, 0.1 us against 0.6).
 """
 from __future__ import annotations
 
@@ -135,6 +139,22 @@ def batch_queued_writes() -> None:
     rospy.topics.QueuedConnection = BatchedConnection
 
 
+def ros_time(secs: int, nsecs: int) -> rospy.Time:
+    """``rospy.Time(secs, nsecs)`` for whole, normalised values (0 <= nsecs < 1e9), made
+    without the constructor's checks: the same object, in a sixth of the time."""
+    now = rospy.Time.__new__(rospy.Time)
+    now.secs, now.nsecs = secs, nsecs
+    return now
+
+
+def has_connections(publisher: rospy.Publisher) -> bool:
+    """Whether ``publisher`` has a subscriber now: ``get_num_connections() > 0`` without its
+    lock (reading a list's length is atomic in CPython; a subscriber that comes or goes
+    meanwhile is seen at the next call, as it would be a moment later with the lock)."""
+    impl = publisher.impl
+    return impl is not None and bool(impl.connections)
+
+
 class OwnClock:
     """rospy's time in the simulator, set by the simulator instead of read from /clock."""
 
@@ -208,12 +228,12 @@ class ClockPublisher:
         """This step's time: rospy's at once, the message written with the others of the
         batch, or at once when the next step would end past the batch's ``coalesce``."""
         secs, nsecs = divmod(now_ns, NS_PER_S)
-        self.own_clock.set(rospy.Time(secs, nsecs))
+        self.own_clock.set(ros_time(secs, nsecs))
         wall = self.wall()
         # a step's wall length; unknown for the first, which is written at once
         step = math.inf if self._last is None else wall - self._last
         self._last = wall
-        if self.publisher.impl is None or not self.publisher.impl.connections:
+        if not has_connections(self.publisher):
             self._pending.clear()
             return
         if not self._pending:

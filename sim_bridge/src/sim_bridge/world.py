@@ -1474,15 +1474,19 @@ class World:
             return False
         self._refresh_step_lists()
         # Gazebo's order: WorldUpdateBegin with the time of the step to come, the physics,
-        # WorldUpdateEnd (sim_bridge.native_plugins)
-        self.native.begin(self.now_ns + self._step_ns)
+        # WorldUpdateEnd (sim_bridge.native_plugins); the host is called only when it
+        # holds plugins (this runs every step)
+        native = self.native if self.native.count else None
+        if native is not None:
+            native.begin(self.now_ns + self._step_ns)
         for plugin in self._plugins:
             plugin.before_step(self.now_ns)
         self._apply_native_efforts()
         self.step_physics()
         for plugin in self._plugins:
             plugin.after_step(self.now_ns)
-        self.native.end()
+        if native is not None:
+            native.end()
         return True
 
     # --- what Gazebo's C++ plugins set (sim_bridge.native_plugins) --------------------------

@@ -276,3 +276,42 @@ def test_without_subscribers_nothing_is_kept_and_rospy_time_still_follows(monkey
     publisher.publish(5_000_000)
     publisher.flush()
     assert publisher._pending == []
+
+
+def test_ros_time_is_rospys_time_of_the_same_seconds():
+    """The loop's cheap rospy.Time equals, hashes, serialises and reads as the checked one."""
+    import rospy
+
+    from sim_bridge.ros_publishing import ros_time
+    for secs, nsecs in ((0, 0), (12, 999_999_999), (4_000_000_000, 1)):
+        made, checked = ros_time(secs, nsecs), rospy.Time(secs, nsecs)
+        assert type(made) is rospy.Time
+        assert made == checked and hash(made) == hash(checked)
+        assert made.to_nsec() == checked.to_nsec() and made.to_sec() == checked.to_sec()
+
+
+def test_has_connections_says_what_get_num_connections_says():
+    """On rospy's real publisher implementation: none, one, none again after its close."""
+    from rosgraph_msgs.msg import Clock
+    from rospy.topics import _PublisherImpl
+
+    from sim_bridge.ros_publishing import has_connections
+
+    class Handle:  # what rospy.Publisher is to has_connections: its impl
+        impl = _PublisherImpl("/connections_test", Clock)
+
+        def get_num_connections(self):
+            return self.impl.get_num_connections()
+
+    handle = Handle()
+    queued, transport, reader = connection()
+    try:
+        assert not has_connections(handle) and handle.get_num_connections() == 0
+        handle.impl.add_connection(queued)
+        assert has_connections(handle) and handle.get_num_connections() == 1
+        transport.close()
+        assert not has_connections(handle) and handle.get_num_connections() == 0
+        Handle.impl = None  # an unregistered publisher
+        assert not has_connections(handle)
+    finally:
+        reader.close()

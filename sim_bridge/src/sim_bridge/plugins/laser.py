@@ -8,8 +8,11 @@ defaults, odd as they are; write both.
 
 Rays are cast in the sensor's frame from the link's true pose, rotation included, from
 ``range min`` to ``range max`` (as Gazebo's rays start at the minimum range). A ray that
-hits nothing reads ``+inf`` (REP 117), not Gazebo's max range; the sensor is always on;
-stamps are simulated time. As Noetic's plugins fill the message (gazebo_ros_pkgs noetic-devel
+hits nothing reads ``+inf`` (REP 117), not Gazebo's max range; stamps are simulated time.
+As Noetic's plugin, the sensor scans only while its topic has a subscriber (the plugin
+turns the sensor off at load and takes its scans from the first subscriber on:
+gazebo_plugins/src/gazebo_ros_laser.cpp:154-155, :158-176): the slots keep their times,
+so a subscriber sees the same scans whenever it came. As Noetic's plugins fill the message (gazebo_ros_pkgs noetic-devel
 f9e1a46, gazebo_plugins/src/gazebo_ros_laser.cpp:188-205, gazebo_ros_gpu_laser.cpp:193-210):
 time_increment and scan_time 0; the intensities the sensor's, one per range, which Gazebo's
 ray sensor gives the ``<laser_retro>`` of what each ray hits, 0 without one or without a
@@ -118,7 +121,7 @@ class Laser(SensorPlugin):
         return ranges
 
     def after_step(self, now_ns: int) -> None:
-        if not self.rate.due(now_ns):
+        if not self.rate.due(now_ns) or not self.context.bus.listened(self.output):
             return
         message = LaserScan()
         message.header.stamp = stamp(now_ns)

@@ -1,0 +1,55 @@
+"""A laser scans only while its topic has a subscriber, as Noetic's gazebo_ros_laser and
+gazebo_ros_gpu_laser (gazebo_ros_pkgs noetic-devel f9e1a46,
+gazebo_plugins/src/gazebo_ros_laser.cpp:154-155: "sensor generation off by default";
+:158-176: the sensor's scans are taken from the first /scan subscriber to the last;
+gazebo_ros_gpu_laser.cpp:158, :165-185 the same): nothing is cast for nobody, and a
+subscriber that comes later gets the scans at the times it would have had all along."""
+import pytest
+
+from sim_bridge.plugins.laser import Laser
+from world_fixtures import run
+
+SCAN_TOPIC = "/scan"
+UNHEARD_SECONDS = 0.3
+HEARD_SECONDS = 0.3
+
+
+def _laser(world):
+    return next(p for p in world.models["bot"].plugins if isinstance(p, Laser))
+
+
+@pytest.mark.parametrize("filename", ["libgazebo_ros_laser.so", "libgazebo_ros_gpu_laser.so"])
+def test_nothing_is_cast_while_nobody_listens_and_a_late_subscriber_keeps_the_slots(
+        world, bus, diff_bot_xml, filename):
+    world.spawn_urdf("bot", diff_bot_xml().replace("libgazebo_ros_laser.so", filename),
+                     (0, 0, 0))
+    laser = _laser(world)
+    scans_cast = []
+    measure = laser.measure
+    laser.measure = lambda: scans_cast.append(world.now_ns) or measure()
+    bus.unheard.add(SCAN_TOPIC)
+    run(world, UNHEARD_SECONDS)
+    assert SCAN_TOPIC not in bus.published and scans_cast == []
+
+    bus.unheard.discard(SCAN_TOPIC)
+    run(world, HEARD_SECONDS)
+    stamps = [scan.header.stamp.to_nsec() for scan in bus.published[SCAN_TOPIC]]
+    assert len(scans_cast) == len(stamps) >= 5  # the sensor's 20 Hz over 0.3 s
+
+    # the slots a laser heard from the start has at the same times
+    from recording_bus import RecordingBus
+    from sim_bridge.world import World
+    from sim_bridge.sdf_world import LinkSpec, ModelSpec, ShapeSpec
+    heard_bus = RecordingBus()
+    heard = World(heard_bus, ray_threads=1)
+    try:
+        heard.add_sdf_model(ModelSpec("ground", True, links=[
+            LinkSpec("link", collisions=[ShapeSpec("plane")])]))
+        heard.spawn_urdf("bot", diff_bot_xml().replace("libgazebo_ros_laser.so", filename),
+                         (0, 0, 0))
+        run(heard, UNHEARD_SECONDS + HEARD_SECONDS)
+        all_along = [scan.header.stamp.to_nsec() for scan in heard_bus.published[SCAN_TOPIC]]
+    finally:
+        heard.close()
+    assert stamps == [stamp for stamp in all_along if stamp >= stamps[0]]
+    assert stamps[0] - UNHEARD_SECONDS * 1e9 <= 0.05e9  # the first slot once heard
