@@ -62,6 +62,7 @@ apt_packages=(
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure cpplint
   python3-pycodestyle libtinyxml-dev libtinyxml2-dev libgtest-dev googletest librandom-numbers-dev
   libeigen-stl-containers-dev
+  pluginlib-dev libclass-loader-dev libtf2-kdl-dev libtf2-eigen-dev libtf-conversions-dev
 )
 missing=()
 for pkg in "${apt_packages[@]}"; do
