@@ -118,6 +118,16 @@ RobotTrajectory& RobotTrajectory::setWayPointDurationFromPrevious(std::size_t in
   return *this;
 }
 
+std::vector<double>& RobotTrajectory::wayPointAccelerations(std::size_t index)
+{
+  if (accelerations_.size() < waypoints_.size())
+    accelerations_.resize(waypoints_.size());
+  std::vector<double>& values = accelerations_.at(index);
+  if (values.empty())
+    values.assign(robot_model_->getVariableCount(), 0.0);
+  return values;
+}
+
 RobotTrajectory& RobotTrajectory::addWayPoint(std::size_t index, const moveit::core::RobotStatePtr& state, double dt,
                                               std::vector<double> accelerations)
 {

@@ -4,10 +4,15 @@
 // times; joints outside the group kept from the reference); durations between stamps and from the start; the
 // joint filter; suffix, prefix, insert, append, reverse (velocities negated, durations between the same waypoints),
 // clear, copies shallow and deep; unwind of a continuous joint; the state at a time as the linear blend of its two
-// waypoints; path_length as the sum of joint-space distances.
+// waypoints; path_length as the sum of joint-space distances. IterativeParabolicTimeParameterization against the
+// Python move_group's timing of the same path (iptp_expected.py: compat/moveit_core's time_parameterization, checked
+// against upstream's loops) and against the limits themselves.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <memory>
 #include <sstream>
 
@@ -15,6 +20,8 @@
 #include <moveit/robot_state/conversions.h>
 #include <moveit/robot_state/robot_state.h>
 #include <moveit/robot_trajectory/robot_trajectory.h>
+#include <moveit/trajectory_processing/iterative_time_parameterization.h>
+#include <moveit/trajectory_processing/trajectory_tools.h>
 #include <urdf/model.h>
 
 namespace
@@ -279,6 +286,122 @@ TEST(ContinuousTrajectory, unwindMakesAContinuousJointContinuous)
   again.unwind(turned);
   EXPECT_NEAR(again.getWayPoint(0).getVariablePosition("gripper"), 3.0 + 4 * M_PI, 1e-9);
   EXPECT_NEAR(again.getWayPoint(1).getVariablePosition("gripper"), -3.0 + 6 * M_PI, 1e-9);
+}
+
+namespace
+{
+// the Python timing of the waypoints (rows of the group's variables): times, then velocities and accelerations by
+// waypoint
+std::vector<std::vector<double>> pythonTiming(const moveit::core::JointModelGroup* group,
+                                              const std::vector<std::vector<double>>& waypoints, double velocity_scaling,
+                                              double acceleration_scaling)
+{
+  const std::string path = "/tmp/moveit_core_cpp_iptp_path.txt";
+  {
+    std::ofstream out(path);
+    out << std::setprecision(17) << velocity_scaling << " " << acceleration_scaling << "\n";
+    for (const std::string& variable : group->getVariableNames())
+    {
+      const moveit::core::VariableBounds& b = group->getParentModel().getVariableBounds(variable);
+      out << (b.velocity_bounded_ ? b.max_velocity_ : 0.0) << " ";
+    }
+    out << "\n";
+    for (const std::string& variable : group->getVariableNames())
+    {
+      const moveit::core::VariableBounds& b = group->getParentModel().getVariableBounds(variable);
+      out << (b.acceleration_bounded_ ? b.max_acceleration_ : 0.0) << " ";
+    }
+    out << "\n";
+    for (const auto& waypoint : waypoints)
+    {
+      for (double value : waypoint)
+        out << value << " ";
+      out << "\n";
+    }
+  }
+  std::vector<std::vector<double>> rows;
+  FILE* pipe = popen(("python3 cpp/iptp_expected.py " + path).c_str(), "r");
+  if (!pipe)
+    return rows;
+  std::string text;
+  char buffer[4096];
+  while (fgets(buffer, sizeof(buffer), pipe))
+    text += buffer;
+  pclose(pipe);
+  std::istringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line))
+  {
+    std::istringstream numbers(line);
+    std::vector<double> row;
+    double x;
+    while (numbers >> x)
+      row.push_back(x);
+    rows.push_back(row);
+  }
+  return rows;
+}
+}  // namespace
+
+TEST_F(ArmTrajectory, iterativeParabolicTimingIsMoveGroupsAndKeepsTheLimits)
+{
+  // a path as a Cartesian plan gives it: many close waypoints, one long jump, a reversal
+  const moveit::core::JointModelGroup* group = model_->getJointModelGroup("manipulator");
+  ASSERT_TRUE(group);
+  std::vector<std::vector<double>> waypoints;
+  for (int i = 0; i < 12; ++i)
+    waypoints.push_back({ 0.05 * i, -0.02 * i, 0.1 * std::sin(0.3 * i), 0.0, 0.4 * (i == 7 ? 1 : 0), 0.01 * i * i });
+  const double velocity_scaling = 0.5;
+  const double acceleration_scaling = 0.3;
+  robot_trajectory::RobotTrajectory trajectory(model_, group);
+  for (const auto& waypoint : waypoints)
+  {
+    moveit::core::RobotState state(*reference_);
+    state.setJointGroupPositions(group, waypoint);
+    trajectory.addSuffixWayPoint(state, 0.0);
+  }
+  trajectory_processing::IterativeParabolicTimeParameterization iptp;
+  ASSERT_TRUE(iptp.computeTimeStamps(trajectory, velocity_scaling, acceleration_scaling));
+  const std::vector<std::vector<double>> expected =
+      pythonTiming(group, waypoints, velocity_scaling, acceleration_scaling);
+  ASSERT_EQ(expected.size(), 1 + 2 * waypoints.size());
+  const std::vector<int>& idx = group->getVariableIndexList();
+  moveit_msgs::RobotTrajectory message;
+  trajectory.getRobotTrajectoryMsg(message);
+  ASSERT_EQ(message.joint_trajectory.points.size(), waypoints.size());
+  for (std::size_t i = 0; i < waypoints.size(); ++i)
+  {
+    EXPECT_NEAR(trajectory.getWayPointDurationFromStart(i), expected[0][i], 1e-9) << "waypoint " << i;
+    const auto& point = message.joint_trajectory.points[i];
+    ASSERT_EQ(point.velocities.size(), idx.size());
+    ASSERT_EQ(point.accelerations.size(), idx.size());
+    for (std::size_t j = 0; j < idx.size(); ++j)
+    {
+      EXPECT_NEAR(trajectory.getWayPoint(i).getVariableVelocity(idx[j]), expected[1 + i][j], 1e-9);
+      EXPECT_NEAR(point.velocities[j], expected[1 + i][j], 1e-9);
+      // upstream asks the first waypoint for velocities per variable, after writing the first one's: its other
+      // variables start at velocity 0 with acceleration 0 (iptp:277-292); the Python pipeline computes them all
+      const double acceleration = i == 0 && j > 0 ? 0.0 : expected[1 + waypoints.size() + i][j];
+      EXPECT_NEAR(point.accelerations[j], acceleration, 1e-9) << "waypoint " << i << " joint " << j;
+    }
+  }
+  // the limits themselves: no segment faster than the scaled speed limit
+  for (std::size_t i = 1; i < waypoints.size(); ++i)
+    for (std::size_t j = 0; j < idx.size(); ++j)
+    {
+      const moveit::core::VariableBounds& b = model_->getVariableBounds(group->getVariableNames()[j]);
+      const double limit = (b.velocity_bounded_ ? b.max_velocity_ : 1.0) * velocity_scaling;
+      EXPECT_LE(std::fabs(waypoints[i][j] - waypoints[i - 1][j]) / trajectory.getWayPointDurationFromPrevious(i),
+                limit + 1e-9);
+    }
+  // a trajectory without a group is refused; an empty one is trivially timed
+  robot_trajectory::RobotTrajectory whole(model_);
+  whole.addSuffixWayPoint(*reference_, 0.0).addSuffixWayPoint(*reference_, 0.0);
+  EXPECT_FALSE(iptp.computeTimeStamps(whole));
+  robot_trajectory::RobotTrajectory none(model_, group);
+  EXPECT_TRUE(iptp.computeTimeStamps(none));
+  EXPECT_TRUE(trajectory_processing::isTrajectoryEmpty(moveit_msgs::RobotTrajectory()));
+  EXPECT_EQ(trajectory_processing::trajectoryWaypointCount(message), waypoints.size());
 }
 
 int main(int argc, char** argv)

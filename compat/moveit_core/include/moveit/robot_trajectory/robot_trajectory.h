@@ -14,8 +14,8 @@
 // One difference, inside: this RobotState keeps no accelerations, so the trajectory keeps each waypoint's
 // accelerations beside it (what a message brought, written back by getRobotTrajectoryMsg; a waypoint added as a
 // RobotState has none, as upstream's RobotState without accelerations). Multi-DOF velocities are not written (upstream
-// writes a planar joint's only). Time parameterization (trajectory_processing::*) is not provided: its headers stop
-// with #error; move_group times its plans (AddTimeParameterization).
+// writes a planar joint's only). trajectory_processing::IterativeParabolicTimeParameterization times a trajectory
+// (moveit/trajectory_processing/iterative_time_parameterization.h), setting those accelerations too.
 #pragma once
 
 #include <deque>
@@ -30,6 +30,11 @@
 #include <moveit_msgs/RobotState.h>
 #include <moveit_msgs/RobotTrajectory.h>
 #include <trajectory_msgs/JointTrajectory.h>
+
+namespace trajectory_processing
+{
+class IterativeParabolicTimeParameterization;
+}
 
 namespace robot_trajectory
 {
@@ -137,6 +142,10 @@ public:
   bool getStateAtDurationFromStart(const double request_duration, moveit::core::RobotStatePtr& output_state) const;
 
 private:
+  // the time parameterization sets the accelerations this trajectory keeps for its RobotStates
+  friend class trajectory_processing::IterativeParabolicTimeParameterization;
+  // the waypoint's accelerations by variable index, made (zeros) when it had none
+  std::vector<double>& wayPointAccelerations(std::size_t index);
   RobotTrajectory& addWayPoint(std::size_t index, const moveit::core::RobotStatePtr& state, double dt,
                                std::vector<double> accelerations);
   const std::vector<const moveit::core::JointModel*>& activeJoints() const;

@@ -1,0 +1,2 @@
+// trajectory_processing::IterativeSplineParameterization is not provided by compat/moveit_core.
+#error "trajectory_processing::IterativeSplineParameterization (moveit/trajectory_processing/iterative_spline_parameterization.h) is not provided by compat/moveit_core: use IterativeParabolicTimeParameterization (moveit/trajectory_processing/iterative_time_parameterization.h), the one Noetic's move_group runs"

@@ -1,0 +1,2 @@
+// trajectory_processing::TimeOptimalTrajectoryGeneration (TOTG) is not provided by compat/moveit_core.
+#error "trajectory_processing::TimeOptimalTrajectoryGeneration (moveit/trajectory_processing/time_optimal_trajectory_generation.h) is not provided by compat/moveit_core: use IterativeParabolicTimeParameterization (moveit/trajectory_processing/iterative_time_parameterization.h), the one Noetic's move_group runs"
