@@ -29,8 +29,12 @@ LOG = logging.getLogger("rosout.moveit_kinematics")
 
 # the parameter naming a solver's tip links (kinematics_plugin_loader.cpp l. 403-425)
 IK_LINKS = "kinematics_solver_ik_links"
+# a parameter MoveIt no longer reads, with a warning (kinematics_plugin_loader.cpp l. 349-358)
+ATTEMPTS = "kinematics_solver_attempts"
 
 Solver = Union[KdlSolver, PluginSolver]
+
+_warned_attempts = False
 
 
 def load_solver(model: RobotModel, group: str, entry: Mapping, urdf: str, srdf: str) -> Solver:
@@ -38,6 +42,12 @@ def load_solver(model: RobotModel, group: str, entry: Mapping, urdf: str, srdf: 
     (RobotModelError / TypeError when even KDL cannot serve it: not a chain, bad values)."""
     settings = SolverSettings.from_parameters(entry)
     name = settings.kinematics_solver
+    global _warned_attempts
+    if ATTEMPTS in entry and not _warned_attempts:
+        _warned_attempts = True     # ROS_WARN_ONCE upstream
+        LOG.warning("Kinematics solver doesn't support #attempts anymore, but only a timeout. "
+                    "Please remove the parameter '%s' from your configuration.",
+                    f"robot_description_kinematics/{group}/{ATTEMPTS}")
     if name == TRAC_IK_PLUGIN:
         solver = TracIkSolver(model, group, settings, TracIkSettings.from_parameters(entry))
         LOG.info("group '%s': kinematics solver '%s' loaded (TRAC-IK's solve types on the "

@@ -46,6 +46,10 @@ const char* const BASE_PACKAGE = "moveit_core";
 const char* const BASE_CLASS = "kinematics::KinematicsBase";
 
 std::unique_ptr<ros::NodeHandle> rosNode;
+// callbacks a plugin subscribes (tf, topics, timers) run on roscpp's global queue: one thread, as move_group's own
+// AsyncSpinner (move_group.cpp l. 206-207 on noetic-devel)
+std::unique_ptr<ros::AsyncSpinner> spinner;
+const uint32_t SPINNER_THREADS = 1;
 
 // Why a plugin could not be loaded (moveit_kinematics._plugin_host.PluginError in Python)
 class LoadError : public std::runtime_error
@@ -71,11 +75,16 @@ bool InitRos(const std::string& node_name, const std::string& ns)
     remappings["__ns"] = ns;
   ros::init(remappings, node_name, ros::init_options::NoSigintHandler);
   rosNode.reset(new ros::NodeHandle("~"));
+  spinner.reset(new ros::AsyncSpinner(SPINNER_THREADS));
+  spinner->start();
   return true;
 }
 
 void ShutdownRos()
 {
+  if (spinner)
+    spinner->stop();
+  spinner.reset();
   rosNode.reset();
   if (ros::isInitialized() && !ros::isShuttingDown())
     ros::shutdown();
