@@ -249,6 +249,9 @@ std::shared_ptr<Solver> Load(const std::string& lookup_name, const std::string& 
   const std::vector<std::string> tips = ik_links.empty() ? std::vector<std::string>{ links.back()->getName() } :
                                                            ik_links;
 
+  // pluginlib's loader is not thread-safe; MoveIt takes a lock around it too (kinematics_plugin_loader.cpp l. 162-163)
+  static std::mutex loader_mutex;
+  std::lock_guard<std::mutex> lock(loader_mutex);
   pluginlib::ClassLoader<kinematics::KinematicsBase>& loader = Loader();
   if (!loader.isClassAvailable(lookup_name))
   {
@@ -305,10 +308,6 @@ PYBIND11_MODULE(_plugin_host, m)
   py::register_exception<LoadError>(m, "PluginError");
   m.def("init_ros", &InitRos, py::arg("node_name"), py::arg("namespace") = "");
   m.def("shutdown_ros", &ShutdownRos);
-  m.def("is_available", [](const std::string& lookup_name) {
-    py::gil_scoped_release release;
-    return Loader().isClassAvailable(lookup_name);
-  });
   m.def("load", &Load, py::arg("lookup_name"), py::arg("urdf"), py::arg("srdf"), py::arg("bounds"), py::arg("group"),
         py::arg("ik_links"), py::arg("search_resolution"), py::arg("timeout"),
         py::arg("robot_description") = "robot_description");
