@@ -8,7 +8,10 @@ CartesianPrecision (1 mm, 0.01 rad; by position only for a group solved by posit
 see _Segment); where it does not, the interval is halved (the
 midpoint's pose solved by IK from the joint-space midpoint) down to ``max_resolution`` of
 the segment (validateAndImproveInterval). The path stops at the first step that has no
-solution, cannot be refined, or collides (with ``avoid_collisions``). ``fraction`` is the
+solution, cannot be refined, collides (with ``avoid_collisions``) or breaks the request's
+``path_constraints`` (each solution is checked against them, as the capability's
+isStateValid callback, cartesian_path_service_capability.cpp:55-61, 132-146 on noetic-devel).
+``fraction`` is the
 share of the waypoints reached; the error code is SUCCESS even when it is below 1, as
 MoveIt's."""
 from __future__ import annotations
@@ -22,6 +25,7 @@ from moveit_msgs.msg import MoveItErrorCodes as Codes
 from moveit_msgs.srv import GetCartesianPathResponse
 from tf.transformations import quaternion_from_matrix, quaternion_matrix, quaternion_slerp
 
+from moveit_core.kinematic_constraints import ConstraintError, ConstraintSet
 from moveit_core.planning_scene import SceneError, pose_matrix
 from moveit_core.robot_model import RobotModelError
 from moveit_core.time_parameterization import joint_trajectory, limits_of, time_path
@@ -61,10 +65,11 @@ class _Segment:
     """One straight segment's steps: IK from the previous state, each interval refined
     until its joint-space midpoint is on the line (validateAndImproveInterval)."""
 
-    def __init__(self, solver, scene, state, link, base_inverse, group, avoid_collisions):
+    def __init__(self, solver, scene, state, link, base_inverse, group, avoid_collisions,
+                 constraints: Optional[ConstraintSet]):
         self.solver, self.scene, self.state, self.link = solver, scene, state, link
         self.base_inverse, self.group = base_inverse, group
-        self.avoid_collisions = avoid_collisions
+        self.avoid_collisions, self.constraints = avoid_collisions, constraints
         self.why = ""          # why the segment stopped, for the log
         # A group solved by position only (kinematics.yaml's position_only_ik, as
         # Interbotix's 4- and 5-joint arms are) does not hold the line's orientation: its
@@ -84,6 +89,11 @@ class _Segment:
             touching = self.scene.contacts(self._complete(q), self.group)
             if touching:
                 self.why = f"in collision ({touching})"
+                return None
+        if self.constraints is not None:
+            broken = self.constraints.decide(self._complete(q))
+            if broken:
+                self.why = f"breaks the path constraints ({broken})"
                 return None
         return q
 
@@ -142,10 +152,17 @@ def compute_cartesian_path(context, monitor, request) -> GetCartesianPathRespons
         response.error_code.val = Codes.FRAME_TRANSFORM_FAILURE \
             if "frame" in str(error) else Codes.INVALID_ROBOT_STATE
         return response
+    try:
+        constraints = ConstraintSet(scene, request.path_constraints)
+    except (ConstraintError, SceneError) as error:
+        rospy.logerr("compute_cartesian_path: path constraints: %s", error)
+        response.error_code.val = Codes.FAILURE
+        return response
     rospy.loginfo("Attempting to follow %d waypoints for link '%s' using a step of %f m "
                   "(in global reference frame)", len(targets), link, request.max_step)
     segment = _Segment(solver, scene, state, link, np.linalg.inv(poses[solver.base]),
-                       request.group_name, request.avoid_collisions)
+                       request.group_name, request.avoid_collisions,
+                       None if constraints.empty else constraints)
     current = poses[link]
     path: List[np.ndarray] = [np.array([state[j] for j in solver.joints])]
     reached = 0.0

@@ -6,7 +6,8 @@ from) with a solution whose tip
 is at that pose (1 mm, 0.01 rad); and a Cartesian path (compute_cartesian_path) from each
 of 50 states moving the tip 1 cm up, orientation kept, which a 4- or 5-joint arm can follow,
 is followed in full when its end is reachable (but at most two of 50 that start by a
-singularity); and a move made in one long step is refined until it follows the line. The arms' configs as their MoveIt packages
+singularity); a move made in one long step is refined until it follows the line; and a
+path stops where it would leave its path constraints. The arms' configs as their MoveIt packages
 load them: Interbotix's kinematics.yaml (position_only_ik false) for the X-series arms, and
 the px100 with position_only_ik true as the 2020 config has it (the position is checked)."""
 import math
@@ -18,7 +19,8 @@ import pytest
 import rospkg
 import rospy
 import yaml
-from moveit_msgs.msg import MoveItErrorCodes
+from shape_msgs.msg import SolidPrimitive
+from moveit_msgs.msg import MoveItErrorCodes, PositionConstraint
 from moveit_msgs.srv import (GetCartesianPathRequest, GetPositionFKRequest,
                              GetPositionIKRequest)
 
@@ -36,6 +38,7 @@ ORIENTATION_TOLERANCE = 0.01    # rad
 LIFT = 0.01                     # m: the Cartesian paths' move up
 CUT_AT_MOST = 2                 # lifts of 50 cut short by a singularity
 REFINED_MOVE = 0.07             # m: along y and down z, in one step (max_step twice that)
+BOX_ABOVE = 0.03                # m: a path constraint's box reaches this far above the start
 # s: the request's timeout, generous (0 would be the solver's 5 ms, one try from the seed
 # and a few random restarts, in MoveIt's KDL too): the solves take 1-30 ms (make bench times
 # them), and a machine busy with other tests must not cut the search short
@@ -232,3 +235,38 @@ def test_a_long_step_is_refined_until_its_midpoints_are_on_the_line():
         assert turned(middle, start) <= ORIENTATION_TOLERANCE
     reached = fk(context, tip, dict(state, **dict(zip(solver.joints, points[-1]))))
     assert np.linalg.norm(reached[:3, 3] - end[:3, 3]) < POSITION_TOLERANCE
+
+
+def test_a_path_stops_where_it_would_leave_its_path_constraints():
+    """The request's path_constraints hold every state of the path (the capability's
+    isStateValid, cartesian_path_service_capability.cpp:55-61, 132-146): a 6 cm lift whose
+    tool must stay in a box reaching 3 cm above its start stops about halfway, every state
+    inside the box by FK of the context's model."""
+    values, group = six_axis_arm()
+    context = from_parameters(lambda name: values[name])
+    monitor = Scene(context.model)
+    solver = context.solver(group)
+    state = dict(context.model.default_positions(),
+                 **dict(zip(solver.joints, [0.0, 0.4, 0.8, 0.3, 0.5, 0.0])))
+    start = fk(context, solver.tip, state)
+    end = start.copy()
+    end[:3, 3] += [0.0, 0.0, 2 * BOX_ABOVE]
+    request = GetCartesianPathRequest(group_name=group, max_step=0.005, avoid_collisions=False)
+    request.header.frame_id = context.model.model_frame
+    request.start_state.joint_state.name = list(state)
+    request.start_state.joint_state.position = list(state.values())
+    request.waypoints = [matrix_pose(end)]
+    box = PositionConstraint(link_name=solver.tip, weight=1.0)
+    box.header.frame_id = context.model.model_frame
+    box.constraint_region.primitives = [SolidPrimitive(type=SolidPrimitive.BOX,
+                                                       dimensions=[0.1, 0.1, 2 * BOX_ABOVE])]
+    centre = np.eye(4)
+    centre[:3, 3] = start[:3, 3]             # the box's axes the model frame's
+    box.constraint_region.primitive_poses = [matrix_pose(centre)]
+    request.path_constraints.position_constraints = [box]
+    answer = cartesian_path.compute_cartesian_path(context, monitor, request)
+    assert answer.error_code.val == MoveItErrorCodes.SUCCESS
+    assert 0.4 <= answer.fraction < 0.6, answer.fraction
+    for point in answer.solution.joint_trajectory.points:
+        tool = fk(context, solver.tip, dict(state, **dict(zip(solver.joints, point.positions))))
+        assert tool[2, 3] - start[2, 3] <= BOX_ABOVE + 1e-9
