@@ -6,7 +6,8 @@ moveit_ros_planning_interface, whose script follows MoveIt's Python tutorial and
 node, on MoveGroupInterface and PlanningSceneInterface, follows its C++ tutorial). Built on
 top of this workspace as a user's own; ``roslaunch six_axis_arm_moveit_config demo.launch``
 with fake controllers; every target checked by the URDF's kinematics (urdf_tools, apart
-from move_group's) at the joint positions /joint_states reports: <= 1 mm, <= 0.01 rad."""
+from move_group's) at the joint positions /joint_states reports: <= 1 mm, <= 0.01 rad; the C++
+tutorial's orientation path constraint (0.1 rad) checked at every planned waypoint."""
 import json
 import math
 import os
@@ -33,6 +34,7 @@ PLANNING_FAILED = -1      # MoveIt's answer to a goal inside a box (every failed
 SUCCESS = 1               # moveit_msgs/MoveItErrorCodes
 METRES, RADIANS = 0.001, 0.01   # how close a reached target must be
 SAME_FK = 1e-6            # the C++ RobotState's forward kinematics against urdf_tools'
+KEEP_ORIENTATION = 0.1    # rad: the C++ tutorial's orientation path constraint, per axis
 
 
 @pytest.fixture(scope="module")
@@ -121,6 +123,19 @@ def check_cpp_steps(urdf, steps):
     joint = steps["joint"]
     assert joint["ok"] and joint["accepted"] and joint["short_refused"], joint
     np.testing.assert_allclose(joint["joints"], joint["goal"], atol=RADIANS)
+
+    # the tutorial's orientation path constraint: every planned waypoint keeps the tool within
+    # 0.1 rad of its start orientation about each axis (kinematic_constraint.cpp's XYZ Euler
+    # angles of the relative rotation), and the goal is reached
+    constrained = steps["constrained"]
+    assert constrained["ok"] and constrained["planned"], constrained
+    kept = quaternion_matrix(constrained["start"][3:])
+    for waypoint in constrained["waypoints"]:
+        turn = kept[:3, :3].T @ tool_pose(urdf, waypoint)[:3, :3]
+        angles = np.abs(euler_from_matrix(turn, "rxyz"))
+        assert np.all(angles <= KEEP_ORIENTATION + SAME_FK), (waypoint, angles)
+    metres, radians = pose_errors(urdf, constrained["joints"], np.array(constrained["goal"]))
+    assert metres <= METRES and radians <= RADIANS, (metres, radians)
 
     cartesian = steps["cartesian"]
     assert cartesian["ok"] and cartesian["code"] == SUCCESS, cartesian
