@@ -36,6 +36,8 @@ from tf.transformations import euler_matrix, quaternion_matrix, random_quaternio
 from moveit_core.kinematic_constraints import ConstraintSet
 from moveit_msgs.msg import OrientationConstraint as OrientationMsg
 
+from moveit_planners_ompl.goals import fixed_offset
+
 # model_based_planning_context.h / planning_context_manager.cpp (noetic-devel):
 # max_state_sampling_attempts defaults to 4 poses per try of the constraint sampler
 MAX_STATE_SAMPLING_ATTEMPTS = 4
@@ -76,7 +78,7 @@ class ConstrainedSampler:
         self.orientation = next((c for c in constraints.orientations if c[0] == self.link), None)
         self.offset = None
         if self.link is not None:
-            self.offset = _fixed_offset(model, solver.tip, self.link)
+            self.offset = fixed_offset(model, solver.tip, self.link)
             if self.offset is None:   # the link does not move with the solver's tip
                 self.link = None
         self.constrained = 0
@@ -168,19 +170,6 @@ class ConstrainedSampler:
         return target
 
 
-def _fixed_offset(model, tip: str, link: str) -> Optional[np.ndarray]:
-    """The pose of ``link`` in the solver tip's frame when fixed joints join them."""
-    if link == tip:
-        return np.eye(4)
-    poses = model.link_poses(model.default_positions())
-    for a, b in ((tip, link), (link, tip)):
-        try:
-            chain = model.urdf.chain(a, b)
-        except ValueError:
-            continue
-        if all(j.type == "fixed" for j in chain):
-            return np.linalg.inv(poses[tip]) @ poses[link]
-    return None
 
 
 class Tree:

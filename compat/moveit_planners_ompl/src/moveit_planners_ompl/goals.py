@@ -182,8 +182,8 @@ def _range(bounds) -> Tuple[float, float]:
     return (bounds.lower, bounds.upper) if bounds.bounded else (-math.pi, math.pi)
 
 
-def _fixed_offset(model, tip: str, link: str) -> np.ndarray:
-    """The pose of ``link`` in the solver tip's frame, when fixed joints join them."""
+def fixed_offset(model, tip: str, link: str) -> Optional[np.ndarray]:
+    """The pose of ``link`` in the solver tip's frame when fixed joints join them, else None."""
     if link == tip:
         return np.eye(4)
     poses = model.link_poses(model.default_positions())
@@ -194,5 +194,13 @@ def _fixed_offset(model, tip: str, link: str) -> np.ndarray:
             continue
         if all(j.type == "fixed" for j in chain):
             return np.linalg.inv(poses[tip]) @ poses[link]
-    raise GoalError(MoveItErrorCodes.INVALID_LINK_NAME,
-                    f"the group's IK solves for '{tip}'; '{link}' does not move rigidly with it")
+    return None
+
+
+def _fixed_offset(model, tip: str, link: str) -> np.ndarray:
+    """:func:`fixed_offset`, a goal's link that does not move rigidly with the tip refused."""
+    offset = fixed_offset(model, tip, link)
+    if offset is None:
+        raise GoalError(MoveItErrorCodes.INVALID_LINK_NAME,
+                        f"the group's IK solves for '{tip}'; '{link}' does not move rigidly with it")
+    return offset
