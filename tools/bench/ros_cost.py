@@ -9,13 +9,20 @@ of its own, and prints one line per measure:
   paced  the same at real_time_factor:=1: CPU as a share of one core
   bare   ``bench.measure_bare``: the same scene's physics alone (no plugins, no ROS)
 
+  plugins  in this process, without ROS: each emulated plugin's own time per step
+         (before and after the physics), in the bench world, with its topics heard
+         (each message serialised as rospy would, not sent) and unheard; the robots:
+         the RB1-class (diff drive, laser), burger_like (IMU), gadget_bot (joint states,
+         imu_sensor, planar_move), sensor_bot (camera, depth camera, range) and a
+         bumper plate robot
+
 ``--profile FILE`` also samples the simulator with py-spy (``--nonblocking``, 1 kHz) over
 the first window measured (fast, else paced) and writes its collapsed stacks to FILE; ``--parts FILE`` prints the
 stacks of such a file sorted into the parts the README's breakdown table lists (what runs
 where, ms per simulated second when the run's simulated seconds are given).
 
 Usage: python3 tools/bench/ros_cost.py [fast] [paced] [bare] [--profile FILE]
-       python3 tools/bench/ros_cost.py --parts FILE SIMULATED_SECONDS
+       python3 tools/bench/ros_cost.py --parts FILE SIMULATED_SECONDS [--step-line N]
 
 The machine is shared while this runs: compare runs made alternately, not single figures.
 """
@@ -36,20 +43,28 @@ import bench  # noqa: E402  (tools/ is not a package)
 import headless  # noqa: E402
 
 SAMPLE_RATE = 1000  # py-spy's samples a second
-# The parts of the breakdown, first match wins: (part, what in a stack marks it). A stack
-# is py-spy's "function (file:line)" frames joined by ";", outermost first.
+# The parts of the breakdown: (part, what marks a frame of it). A stack is py-spy's
+# "function (file:line)" frames joined by ";", outermost first; it is read from its
+# innermost frame outwards and goes to the first part a frame marks (py-spy's
+# --nonblocking stacks may mix two moments: the innermost frame is the surest).
 PARTS: Tuple[Tuple[str, Tuple[str, ...]], ...] = (
-    ("pybullet.stepSimulation", ("step_physics (sim_bridge/world.py", "stepSimulation")),
+    ("pybullet.stepSimulation", ("step_physics (sim_bridge/world.py:STEP)",)),
     ("tyre friction", ("tyre_friction.py",)),
-    ("laser: cast and message", ("plugins/laser.py", "ray_scene.py", "ray_kernel.py")),
-    ("drive plugin: odometry, TF, joint states", ("plugins/diff_drive.py",)),
-    ("/clock", ("ros_publishing.py",)),
-    ("model_states, link_states, performance_metrics",
-     ("_publish_model_states", "_publish_link_states", "_publish_performance")),
-    ("service queue", ("serve (sim_bridge/ros_node.py",)),
-    ("pacing (sleep)", ("_pace (sim_bridge/ros_node.py",)),
-    ("other plugins, native plugin host", ("sim_bridge/plugins/", "native_plugins.py")),
-    ("the step loop's own Python", ("run (sim_bridge/ros_node.py", "step (sim_bridge/world.py")),
+    ("laser: cast, message, send", ("plugins/laser.py", "ray_scene.py", "ray_kernel.py",
+                                    "_LaserScan.py")),
+    ("drive plugin: commands, odometry, TF, joint states", ("plugins/diff_drive.py",
+                                                            "drive_base.py")),
+    ("/clock: rospy's time, packing, writes", ("ros_publishing.py", "_publish_clock")),
+    ("model_states, link_states, performance_metrics checks",
+     ("_publish_model_states", "_publish_link_states", "_publish_performance",
+      "PerformanceMeter")),
+    ("service queue", ("PhysicsThread.serve",)),
+    ("pacing (sleeping included)", ("._pace (sim_bridge/ros_node.py",)),
+    ("C++ plugin host (none loaded)", ("native_plugins.py",)),
+    ("the step loop's own Python, other physics lines",
+     ("SimBridgeNode.run (sim_bridge/ros_node.py", "World.step (sim_bridge/world.py",
+      "World.step_physics (sim_bridge/world.py", "World._refresh_step_lists",
+      "World._apply_native_efforts")),
 )
 
 
@@ -58,7 +73,7 @@ def profile(pid: int, seconds: float, path: str) -> subprocess.Popen:
     thread, without stopping the process at each sample."""
     return subprocess.Popen(["py-spy", "record", "--nonblocking", "--format", "raw",
                              "--rate", str(SAMPLE_RATE), "--duration", str(int(seconds)),
-                             "--threads", "--idle", "--pid", str(pid), "--output", path],
+                             "--threads", "--pid", str(pid), "--output", path],
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
 
 
@@ -70,28 +85,133 @@ def user_and_system(pid: int) -> Tuple[float, float]:
     return int(fields[11]) / tick, int(fields[12]) / tick
 
 
-def parts(path: str) -> Dict[str, int]:
-    """Samples by part, the main thread's apart from other threads' (rospy's)."""
+def step_line() -> str:
+    """``world.py:<line>`` of the stepSimulation call in World.step_physics (the frame py-spy
+    shows for time spent in pybullet's step)."""
+    import inspect
+    from sim_bridge import world
+    lines, first = inspect.getsourcelines(world.World.step_physics)
+    for offset, line in enumerate(lines):
+        if "pb.stepSimulation(" in line:
+            return str(first + offset)
+    raise RuntimeError("World.step_physics no longer calls pb.stepSimulation")
+
+
+def parts(path: str, step: Optional[str] = None) -> Dict[str, int]:
+    """The main thread's samples by part (PARTS), and what other threads took."""
+    step = step or step_line()
+    marks = [(part, tuple(mark.replace("STEP", step) for mark in frame_marks))
+             for part, frame_marks in PARTS]
     counts: Dict[str, int] = collections.Counter()
     with open(path, encoding="utf-8") as stream:
         for line in stream:
             stack, _, count = line.rstrip("\n").rpartition(" ")
             if not stack:
                 continue
-            thread = stack.split(";", 1)[0]
-            if "run (sim_bridge/ros_node.py" not in stack:
-                counts["other threads (rospy's readers and writers, roscpp host)" if
-                       "MainThread" not in thread and "main_thread" not in thread
-                       else "main thread, outside the loop"] += int(count)
+            frames = stack.split(";")
+            if "MainThread" not in frames[0]:
+                counts["other threads (rospy's readers and writers)"] += int(count)
                 continue
+            if not any("SimBridgeNode.run" in frame for frame in frames):
+                continue  # start-up or shut-down
             counts["main thread, all"] += int(count)
-            for part, marks in PARTS:
-                if any(mark in stack for mark in marks):
+            for frame in reversed(frames):
+                part = next((part for part, frame_marks in marks
+                             if any(mark in frame for mark in frame_marks)), None)
+                if part is not None:
                     counts[part] += int(count)
                     break
             else:
                 counts["main thread, elsewhere"] += int(count)
     return counts
+
+
+# a robot with a contact sensor's bumper plate (as sim_bridge/test/unit/test_bumper.py's)
+BUMPER_ROBOT = """<robot name="bumper_bot">
+  <link name="base_link"><inertial><mass value="10"/><inertia ixx="0.2" ixy="0" ixz="0"
+    iyy="0.2" iyz="0" izz="0.2"/></inertial>
+    <collision><geometry><box size="0.4 0.4 0.2"/></geometry></collision></link>
+  <joint name="bumper_joint" type="fixed"><parent link="base_link"/><child link="bumper"/>
+    <origin xyz="0 0 0.11"/></joint>
+  <link name="bumper"><inertial><mass value="0.1"/><inertia ixx="1e-3" ixy="0" ixz="0"
+    iyy="1e-3" iyz="0" izz="1e-3"/></inertial>
+    <collision><geometry><box size="0.3 0.3 0.02"/></geometry></collision></link>
+  <gazebo reference="bumper"><sensor name="plate" type="contact">
+    <update_rate>50</update_rate>
+    <contact><collision>base_link_fixed_joint_lump__bumper_collision</collision></contact>
+    <plugin name="plate_plugin" filename="libgazebo_ros_bumper.so">
+      <bumperTopicName>plate_bumper</bumperTopicName></plugin>
+  </sensor></gazebo></robot>"""
+PLUGIN_STEPS = 2000  # steps each robot is timed over (2 s at the bench world's 1 ms)
+# where each robot stands in the bench hall (x, y): apart, on free floor
+PLUGIN_SPOTS = ((0.0, 0.0), (-2.5, 0.0), (2.5, 0.0), (0.0, 2.5), (0.0, -2.5))
+
+
+def plugin_costs(heard: bool) -> Dict[str, float]:
+    """Microseconds per step of each plugin's before_step and after_step (summed over the
+    plugins of a type), the robots above together in the bench world."""
+    import io
+
+    from geometry_msgs.msg import Twist
+
+    from sim_bridge.local_bus import LocalBus
+    from sim_bridge.sdf_world import load_world
+    from sim_bridge.world import World
+    from urdf_tools.xacro_loader import expand
+
+    class Bus(LocalBus):
+        """Every message serialised as rospy's publish would; heard or not, as asked."""
+
+        def publish(self, topic, message):
+            message.serialize(io.BytesIO())
+            super().publish(topic, message)
+
+        def send_transforms(self, transforms):
+            from tf2_msgs.msg import TFMessage
+            TFMessage(transforms=list(transforms)).serialize(io.BytesIO())
+
+        def listened(self, publisher=None):
+            return heard
+
+        def info(self, text):
+            pass
+
+        def warn(self, text):
+            pass
+
+    data = os.path.join(os.path.dirname(TOOLS), "sim_bridge", "test", "data")
+    world = World(Bus(), ray_threads=1)
+    world.load_world(load_world(os.path.join(TOOLS, "bench", "bench.world"),
+                                warn=lambda _text: None))
+    robots = [
+        ("rb1_class", expand(os.path.join(data, "diff_bot.urdf.xacro"),
+                             {"laser_samples": "720", "laser_half_fov_degrees": "135"})),
+        ("burger", expand(os.path.join(data, "burger_like.urdf.xacro"), {})),
+        ("gadget", open(os.path.join(data, "gadget_bot.urdf"), encoding="utf-8").read()),
+        ("sensors", expand(os.path.join(data, "sensor_bot.urdf.xacro"), {})),
+        ("bumper", BUMPER_ROBOT),
+    ]
+    spent: Dict[str, float] = collections.Counter()
+    for (name, xml), (x, y) in zip(robots, PLUGIN_SPOTS):
+        model = world.spawn_urdf(name, xml, (x, y, 0.05))
+        for plugin in model.plugins:
+            kind = type(plugin).__name__
+            for hook in ("before_step", "after_step"):
+                original = getattr(plugin, hook)
+
+                def timed(now_ns, original=original, kind=kind):
+                    started = time.perf_counter()
+                    original(now_ns)
+                    spent[kind] += time.perf_counter() - started
+
+                setattr(plugin, hook, timed)
+    circle = Twist()
+    circle.linear.x, circle.angular.z = 0.3, 0.5
+    world.bus.publish("/cmd_vel", circle)
+    for _ in range(PLUGIN_STEPS):
+        world.step()
+    world.close()
+    return {kind: 1e6 * seconds / PLUGIN_STEPS for kind, seconds in spent.items()}
 
 
 def measure(which: Sequence[str], profile_path: Optional[str]) -> Dict[str, Dict[str, float]]:
@@ -139,24 +259,32 @@ def measure(which: Sequence[str], profile_path: Optional[str]) -> Dict[str, Dict
                 core.wait(timeout=20)
     if "bare" in which:
         results["bare"] = {"rtf": bench.measure_bare()}
+    if "plugins" in which:
+        heard, unheard = plugin_costs(True), plugin_costs(False)
+        for kind in sorted(heard, key=lambda k: -heard[k]):
+            print(f"plugin {kind:28} heard {heard[kind]:8.2f} us/step   "
+                  f"unheard {unheard.get(kind, float('nan')):8.2f} us/step")
     return results
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("which", nargs="*", default=["fast", "paced"],
-                        help="fast, paced, bare (default: fast paced)")
+                        help="fast, paced, bare, plugins (default: fast paced)")
     parser.add_argument("--profile", help="py-spy's collapsed stacks of the fast window")
     parser.add_argument("--parts", nargs=2, metavar=("FILE", "SIMULATED_SECONDS"),
                         help="sort a profile's stacks into parts")
+    parser.add_argument("--step-line", help="world.py's line of pb.stepSimulation when the "
+                        "profile was taken (default: today's)")
     arguments = parser.parse_args(argv)
     if arguments.parts:
-        counts = parts(arguments.parts[0])
+        counts = parts(arguments.parts[0], arguments.step_line)
         simulated = float(arguments.parts[1])
+        main_thread = max(counts.get("main thread, all", 0), 1)
         for part, count in sorted(counts.items(), key=lambda item: -item[1]):
             # a sample is 1/SAMPLE_RATE s of the thread's wall time
-            print(f"{part:55} {count:7d} samples  "
-                  f"{1000.0 * count / SAMPLE_RATE / simulated:7.2f} ms per simulated s")
+            print(f"{part:55} {count:7d} samples {1000.0 * count / SAMPLE_RATE / simulated:7.2f} "
+                  f"ms per simulated s {100.0 * count / main_thread:5.1f} %")
         return 0
     started = time.monotonic()
     results = measure(arguments.which, arguments.profile)

@@ -1,8 +1,8 @@
-"""A laser scans only while its topic has a subscriber, as Noetic's gazebo_ros_laser and
-gazebo_ros_gpu_laser (gazebo_ros_pkgs noetic-devel f9e1a46,
+"""A laser (and a range sensor) measures only while its topic has a subscriber, as Noetic's
+gazebo_ros_laser and gazebo_ros_gpu_laser (gazebo_ros_pkgs noetic-devel f9e1a46,
 gazebo_plugins/src/gazebo_ros_laser.cpp:154-155: "sensor generation off by default";
 :158-176: the sensor's scans are taken from the first /scan subscriber to the last;
-gazebo_ros_gpu_laser.cpp:158, :165-185 the same): nothing is cast for nobody, and a
+gazebo_ros_gpu_laser.cpp:158, :165-181 the same): nothing is cast for nobody, and a
 subscriber that comes later gets the scans at the times it would have had all along."""
 import pytest
 
@@ -53,3 +53,29 @@ def test_nothing_is_cast_while_nobody_listens_and_a_late_subscriber_keeps_the_sl
         heard.close()
     assert stamps == [stamp for stamp in all_along if stamp >= stamps[0]]
     assert stamps[0] - UNHEARD_SECONDS * 1e9 <= 0.05e9  # the first slot once heard
+
+
+def test_a_range_sensor_measures_only_while_heard_and_keeps_its_slots(world, bus):
+    """gazebo_ros_range the same way (gazebo_plugins/src/gazebo_ros_range.cpp:220: the
+    sensor off at load; :228-241: on from the first subscriber to the last): the sensor
+    robot's sonar at 20 Hz casts nothing unheard, then reads at its slots."""
+    from sim_bridge.plugins.range import Range
+    from urdf_tools.xacro_loader import expand
+    from world_fixtures import DATA
+    import os
+    world.spawn_urdf("bot", expand(os.path.join(DATA, "sensor_bot.urdf.xacro")), (0, 0, 0.01))
+    sonar = next(p for p in world.models["bot"].plugins if isinstance(p, Range))
+    topic = sonar.output.topic
+    measured = []
+    measure = sonar.measure
+    sonar.measure = lambda: measured.append(world.now_ns) or measure()
+    bus.unheard.add(topic)
+    run(world, UNHEARD_SECONDS)
+    assert topic not in bus.published and measured == []
+    bus.unheard.discard(topic)
+    run(world, HEARD_SECONDS)
+    # the plugin sends one message object again and again, as upstream's: count them
+    assert len(bus.published[topic]) == len(measured) >= 5
+    assert all(later - earlier == 50_000_000  # its <update_rate> 20
+               for earlier, later in zip(measured, measured[1:]))
+    assert measured[0] - UNHEARD_SECONDS * 1e9 <= 50_000_000

@@ -9,7 +9,10 @@ model's tf_prefix applied), ``radiation`` (ultrasound when absent; exactly ``ult
 ULTRASOUND and any other text INFRARED, as upstream compares it), ``fov``
 (0.05 rad, reported in the message), ``gaussianNoise`` (0, added to a reading within range,
 seeded), ``updateRate`` (0: the sensor's). Nothing within range reads ``+inf`` (REP 117), where
-Gazebo reports the maximum range, as sim_bridge's laser does.
+Gazebo reports the maximum range, as sim_bridge's laser does. As Noetic's plugin, the sensor
+measures only while its topic has a subscriber (gazebo_ros_pkgs noetic-devel f9e1a46,
+gazebo_plugins/src/gazebo_ros_range.cpp:220: off at load; :228-241: on from the first
+subscriber to the last); the update slots keep their times.
 """
 from __future__ import annotations
 
@@ -80,7 +83,7 @@ class Range(SensorPlugin):
         return nearest
 
     def after_step(self, now_ns: int) -> None:
-        if not self.rate.due(now_ns):
+        if not self.rate.due(now_ns) or not self.context.bus.listened(self.output):
             return
         self.message.header.stamp = stamp(now_ns)
         self.message.range = self.measure()
