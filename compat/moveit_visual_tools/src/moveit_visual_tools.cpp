@@ -38,6 +38,30 @@ const std::string VJOINT_NAME = "virtual_joint";
 
 const char* const CONSOLE_RED = "\033[31m";
 const char* const CONSOLE_RESET = "\033[0m";
+
+// publishTrajectoryLine by group: publish_tip for each end-effector tip of arm_jmg, false at the first that fails or
+// when the group has none (l. 1369-1394 and 1403-1428, the same for a message and a RobotTrajectory)
+template <typename PublishTip>
+bool publishForEachTip(const moveit::core::JointModelGroup* arm_jmg, PublishTip publish_tip)
+{
+  if (!arm_jmg)
+  {
+    ROS_FATAL_STREAM_NAMED(LOGNAME, "arm_jmg is NULL");
+    return false;
+  }
+  std::vector<const moveit::core::LinkModel*> tips;
+  if (!arm_jmg->getEndEffectorTips(tips) || tips.empty())
+  {
+    ROS_ERROR_STREAM_NAMED(LOGNAME, "Unable to get end effector tips from jmg");
+    return false;
+  }
+  for (const moveit::core::LinkModel* tip : tips)
+  {
+    if (!publish_tip(tip))
+      return false;
+  }
+  return true;
+}
 }  // namespace
 
 MoveItVisualTools::MoveItVisualTools()
@@ -558,26 +582,9 @@ bool MoveItVisualTools::publishTrajectoryLine(const moveit_msgs::RobotTrajectory
                                               const moveit::core::JointModelGroup* arm_jmg,
                                               const rviz_visual_tools::colors& color)
 {
-  // Each end-effector tip of the group (l. 1369-1394)
-  if (!arm_jmg)
-  {
-    ROS_FATAL_STREAM_NAMED(LOGNAME, "arm_jmg is NULL");
-    return false;
-  }
-  std::vector<const moveit::core::LinkModel*> tips;
-  if (!arm_jmg->getEndEffectorTips(tips) || tips.empty())
-  {
-    ROS_ERROR_STREAM_NAMED(LOGNAME, "Unable to get end effector tips from jmg");
-    return false;
-  }
-  for (const moveit::core::LinkModel* tip : tips)
-  {
-    if (!publishTrajectoryLine(trajectory_msg, tip, arm_jmg, color))
-    {
-      return false;
-    }
-  }
-  return true;
+  return publishForEachTip(arm_jmg, [&](const moveit::core::LinkModel* tip) {
+    return publishTrajectoryLine(trajectory_msg, tip, arm_jmg, color);
+  });
 }
 
 bool MoveItVisualTools::publishTrajectoryPath(const robot_trajectory::RobotTrajectoryPtr& trajectory, bool blocking)
@@ -660,26 +667,9 @@ bool MoveItVisualTools::publishTrajectoryLine(const robot_trajectory::RobotTraje
                                               const moveit::core::JointModelGroup* arm_jmg,
                                               const rviz_visual_tools::colors& color)
 {
-  // Each end-effector tip of the group (l. 1403-1428)
-  if (!arm_jmg)
-  {
-    ROS_FATAL_STREAM_NAMED(LOGNAME, "arm_jmg is NULL");
-    return false;
-  }
-  std::vector<const moveit::core::LinkModel*> tips;
-  if (!arm_jmg->getEndEffectorTips(tips) || tips.empty())
-  {
-    ROS_ERROR_STREAM_NAMED(LOGNAME, "Unable to get end effector tips from jmg");
-    return false;
-  }
-  for (const moveit::core::LinkModel* tip : tips)
-  {
-    if (!publishTrajectoryLine(robot_trajectory, tip, color))
-    {
-      return false;
-    }
-  }
-  return true;
+  return publishForEachTip(arm_jmg, [&](const moveit::core::LinkModel* tip) {
+    return publishTrajectoryLine(robot_trajectory, tip, color);
+  });
 }
 
 bool MoveItVisualTools::publishTrajectoryPoints(const std::vector<moveit::core::RobotStatePtr>& robot_state_trajectory,
