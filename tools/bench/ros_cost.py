@@ -7,6 +7,8 @@ of its own, and prints one line per measure:
   fast   max real-time factor with /clock every step, and the simulator's CPU ms per
          simulated second
   paced  the same at real_time_factor:=1: CPU as a share of one core
+  robots make bench's "8 robots" measure (their lasers unheard: only the probe listens,
+         to /scan and /clock); robots_heard: the same with each robot's scan listened to
   bare   ``bench.measure_bare``: the same scene's physics alone (no plugins, no ROS)
 
   plugins  in this process, without ROS: each emulated plugin's own time per step
@@ -251,6 +253,12 @@ def measure(which: Sequence[str], profile_path: Optional[str]) -> Dict[str, Dict
                 if "paced" in which:
                     results["paced"] = bench.measure_ros(env, probe, "paced",
                                                          real_time_factor="1")
+                if "robots" in which:  # as make bench's "8 robots" row runs them
+                    results["robots"] = bench.measure_ros(env, probe, "robots_8", robots=8)
+                if "robots_heard" in which:  # the same, each robot's /scan listened to
+                    results["robots_heard"] = bench.measure_ros(
+                        env, probe, "robots_8_heard", robots=8,
+                        listen=[f"/r{index}/scan" for index in range(8)])
                 bench.measure_window = original
                 if sampler:
                     sampler[0].wait(timeout=60)
@@ -270,7 +278,7 @@ def measure(which: Sequence[str], profile_path: Optional[str]) -> Dict[str, Dict
 def main(argv: Optional[Sequence[str]] = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("which", nargs="*", default=["fast", "paced"],
-                        help="fast, paced, bare, plugins (default: fast paced)")
+                        help="fast, paced, robots, robots_heard, bare, plugins (default: fast paced)")
     parser.add_argument("--profile", help="py-spy's collapsed stacks of the fast window")
     parser.add_argument("--parts", nargs=2, metavar=("FILE", "SIMULATED_SECONDS"),
                         help="sort a profile's stacks into parts")
