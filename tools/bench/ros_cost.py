@@ -10,20 +10,21 @@ of its own, and prints one line per measure:
   robots make bench's "8 robots" measure (their lasers unheard: only the probe listens,
          to /scan and /clock); robots_heard: the same with each robot's scan listened to
   bare   ``bench.measure_bare``: the same scene's physics alone (no plugins, no ROS)
+  plugins
+         in this process, without ROS: each emulated plugin's own time per step (before
+         and after the physics), in the bench world, with its topics heard (each message
+         serialised as rospy would, not sent) and unheard; the robots: the RB1-class
+         (diff drive, laser), burger_like (IMU), gadget_bot (joint states, imu_sensor,
+         planar_move), sensor_bot (camera, depth camera, range) and a bumper plate robot
 
-  plugins  in this process, without ROS: each emulated plugin's own time per step
-         (before and after the physics), in the bench world, with its topics heard
-         (each message serialised as rospy would, not sent) and unheard; the robots:
-         the RB1-class (diff drive, laser), burger_like (IMU), gadget_bot (joint states,
-         imu_sensor, planar_move), sensor_bot (camera, depth camera, range) and a
-         bumper plate robot
+``--profile FILE`` (needs PyPI's py-spy on PATH) also samples the simulator with py-spy
+(``--nonblocking``, 1 kHz) over the first window measured (fast, else paced) and writes
+its collapsed stacks to FILE; ``--parts FILE SIMULATED_SECONDS`` sorts the stacks of such
+a file into the parts the README's breakdown table lists (ms per simulated second, and
+each part's share of the simulator's main thread).
 
-``--profile FILE`` also samples the simulator with py-spy (``--nonblocking``, 1 kHz) over
-the first window measured (fast, else paced) and writes its collapsed stacks to FILE; ``--parts FILE`` prints the
-stacks of such a file sorted into the parts the README's breakdown table lists (what runs
-where, ms per simulated second when the run's simulated seconds are given).
-
-Usage: python3 tools/bench/ros_cost.py [fast] [paced] [bare] [--profile FILE]
+Usage: python3 tools/bench/ros_cost.py [fast] [paced] [robots] [robots_heard] [bare]
+                                       [plugins] [--profile FILE]
        python3 tools/bench/ros_cost.py --parts FILE SIMULATED_SECONDS [--step-line N]
 
 The machine is shared while this runs: compare runs made alternately, not single figures.
@@ -33,6 +34,7 @@ from __future__ import annotations
 import argparse
 import collections
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -73,6 +75,8 @@ PARTS: Tuple[Tuple[str, Tuple[str, ...]], ...] = (
 def profile(pid: int, seconds: float, path: str) -> subprocess.Popen:
     """py-spy sampling ``pid`` for ``seconds`` into ``path`` (collapsed stacks), every
     thread, without stopping the process at each sample."""
+    if shutil.which("py-spy") is None:
+        raise SystemExit("--profile needs py-spy on PATH (pip install py-spy)")
     return subprocess.Popen(["py-spy", "record", "--nonblocking", "--format", "raw",
                              "--rate", str(SAMPLE_RATE), "--duration", str(int(seconds)),
                              "--threads", "--pid", str(pid), "--output", path],
@@ -278,7 +282,8 @@ def measure(which: Sequence[str], profile_path: Optional[str]) -> Dict[str, Dict
 def main(argv: Optional[Sequence[str]] = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("which", nargs="*", default=["fast", "paced"],
-                        help="fast, paced, robots, robots_heard, bare, plugins (default: fast paced)")
+                        help="fast, paced, robots, robots_heard, bare, plugins "
+                        "(default: fast paced)")
     parser.add_argument("--profile", help="py-spy's collapsed stacks of the fast window")
     parser.add_argument("--parts", nargs=2, metavar=("FILE", "SIMULATED_SECONDS"),
                         help="sort a profile's stacks into parts")

@@ -12,8 +12,9 @@ hits nothing reads ``+inf`` (REP 117), not Gazebo's max range; stamps are simula
 As Noetic's plugin, the sensor scans only while its topic has a subscriber (the plugin
 turns the sensor off at load and takes its scans from the first subscriber on:
 gazebo_plugins/src/gazebo_ros_laser.cpp:154-155, :158-176): the slots keep their times,
-so a subscriber sees the same scans whenever it came. As Noetic's plugins fill the message (gazebo_ros_pkgs noetic-devel
-f9e1a46, gazebo_plugins/src/gazebo_ros_laser.cpp:188-205, gazebo_ros_gpu_laser.cpp:193-210):
+so a subscriber sees the same scans whenever it came. As Noetic's plugins fill the
+message (gazebo_ros_pkgs noetic-devel f9e1a46, gazebo_plugins/src/gazebo_ros_laser.cpp:188-205,
+gazebo_ros_gpu_laser.cpp:193-210):
 time_increment and scan_time 0; the intensities the sensor's, one per range, which Gazebo's
 ray sensor gives the ``<laser_retro>`` of what each ray hits, 0 without one or without a
 hit: all 0 here (``<laserRetro>`` is not emulated).
