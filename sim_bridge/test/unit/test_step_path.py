@@ -60,3 +60,19 @@ def test_the_physics_queue_serves_every_job_in_order_from_other_threads():
         assert [i for kk, i in done if kk == k] == list(range(200))
     physics.serve()  # nothing left: returns at once
     assert len(done) == 800
+
+
+def test_the_old_imus_frame_change_is_tfs_matrix_transposed():
+    """gazebo_ros_imu's world -> sensor turn, written out in floats, against
+    tf.transformations' rotation matrix of the same unit quaternion, transposed."""
+    import numpy as np
+    from tf.transformations import quaternion_matrix
+
+    from sim_bridge.plugins.gazebo_ros_imu import to_sensor
+    rng = np.random.default_rng(36)
+    for _ in range(200):
+        q = rng.normal(size=4)
+        q /= np.linalg.norm(q)
+        v = rng.normal(scale=10.0, size=3)
+        expected = quaternion_matrix(q)[:3, :3].T @ v
+        assert to_sensor(tuple(q), v) == pytest.approx(tuple(expected), abs=1e-12)
