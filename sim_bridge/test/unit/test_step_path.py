@@ -68,7 +68,7 @@ def test_the_old_imus_frame_change_is_tfs_matrix_transposed():
     import numpy as np
     from tf.transformations import quaternion_matrix
 
-    from sim_bridge.plugins.gazebo_ros_imu import to_sensor
+    from sim_bridge.plugins.body_state import to_sensor
     rng = np.random.default_rng(36)
     for _ in range(200):
         q = rng.normal(size=4)

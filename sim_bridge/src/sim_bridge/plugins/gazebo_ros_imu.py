@@ -37,31 +37,19 @@ keeps its old time stamp and reads a spike, or stalls for updateRate > 0).
 """
 from __future__ import annotations
 
-from typing import Sequence, Tuple
+from typing import Sequence
 
 import numpy as np
 from sensor_msgs.msg import Imu
 from std_srvs.srv import Empty, EmptyResponse
 
 from sim_bridge.plugins.base import Plugin, stamp
-from sim_bridge.plugins.body_state import body_link, link_state, q_multiply, q_normalized, vector3
+from sim_bridge.plugins.body_state import (body_link, link_state, q_multiply, q_normalized,
+                                           to_sensor, vector3)
 from sim_bridge.poses import quaternion_from_rpy
 
 DEFAULT_NAME = "/default_imu"
 NO_NOISE = (0.0, 0.0, 0.0)
-
-
-def to_sensor(q: Sequence[float], v: Sequence[float]) -> Tuple[float, float, float]:
-    """``R(q)ᵀ v`` for a unit quaternion (x, y, z, w): a world vector in the sensor's axes.
-    Written out in floats: numpy's 4x4 matrix and product cost 10 us of this plugin's 23 a
-    message (it runs every step at updateRate 0, TurtleBot3's)."""
-    x, y, z, w = q
-    vx, vy, vz = (float(c) for c in v)
-    xx, yy, zz = x * x, y * y, z * z
-    xy, xz, yz, xw, yw, zw = x * y, x * z, y * z, x * w, y * w, z * w
-    return ((1.0 - 2.0 * (yy + zz)) * vx + 2.0 * (xy + zw) * vy + 2.0 * (xz - yw) * vz,
-            2.0 * (xy - zw) * vx + (1.0 - 2.0 * (xx + zz)) * vy + 2.0 * (yz + xw) * vz,
-            2.0 * (xz + yw) * vx + 2.0 * (yz - xw) * vy + (1.0 - 2.0 * (xx + yy)) * vz)
 
 
 class GazeboRosImu(Plugin):
