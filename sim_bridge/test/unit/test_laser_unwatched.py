@@ -1,4 +1,4 @@
-"""A laser (and a range sensor) measures only while its topic has a subscriber, as Noetic's
+"""A laser (and a range sensor, and p3d) measures only while its topic has a subscriber, as Noetic's
 gazebo_ros_laser and gazebo_ros_gpu_laser (gazebo_ros_pkgs noetic-devel f9e1a46,
 gazebo_plugins/src/gazebo_ros_laser.cpp:154-155: "sensor generation off by default";
 :158-176: the sensor's scans are taken from the first /scan subscriber to the last;
@@ -79,3 +79,27 @@ def test_a_range_sensor_measures_only_while_heard_and_keeps_its_slots(world, bus
     assert all(later - earlier == 50_000_000  # its <update_rate> 20
                for earlier, later in zip(measured, measured[1:]))
     assert measured[0] - UNHEARD_SECONDS * 1e9 <= 50_000_000
+
+
+def test_p3d_computes_only_while_heard_and_keeps_its_slots(world, bus):
+    """gazebo_ros_p3d fills and publishes only while subscribed
+    (gazebo_plugins/src/gazebo_ros_p3d.cpp:243): the gadget robot's 50 Hz ground truth of
+    its pan link publishes nothing unheard (no noise drawn for nobody), then one message
+    per 20 ms slot, stamped with its slot."""
+    import os
+
+    from sim_bridge.plugins.p3d import P3D
+    from world_fixtures import DATA
+    with open(os.path.join(DATA, "gadget_bot.urdf"), encoding="utf-8") as stream:
+        world.spawn_urdf("bot", stream.read(), (0, 0, 0.05))
+    truth = next(p for p in world.models["bot"].plugins if isinstance(p, P3D))
+    topic = truth.output.topic
+    bus.unheard.add(topic)
+    run(world, UNHEARD_SECONDS)
+    assert topic not in bus.published
+    bus.unheard.discard(topic)
+    run(world, HEARD_SECONDS)
+    stamps = [message.header.stamp.to_nsec() for message in bus.published[topic]]
+    assert len(stamps) >= 10
+    assert all(later - earlier == 20_000_000 for earlier, later in zip(stamps, stamps[1:]))
+    assert stamps[0] - UNHEARD_SECONDS * 1e9 <= 20_000_000

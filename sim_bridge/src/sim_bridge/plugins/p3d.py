@@ -62,7 +62,10 @@ class P3D(Plugin):
         return np.asarray(state[6]) + np.cross(angular, frame - com), angular
 
     def after_step(self, now_ns: int) -> None:
-        if not self.rate.due(now_ns):
+        # only while someone subscribes, as Noetic's (gazebo_plugins/src/gazebo_ros_p3d.cpp:243);
+        # the slots keep their times meanwhile (upstream's last time stays, so its first
+        # message heard comes at once, here at the next slot)
+        if not self.rate.due(now_ns) or not self.context.bus.listened(self.output):
             return
         robot = self.context.robot
         position, orientation = robot.link_pose(self.body)
