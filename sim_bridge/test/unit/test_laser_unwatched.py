@@ -1,4 +1,4 @@
-"""A laser (and a range sensor, and p3d) measures only while its topic has a subscriber, as Noetic's
+"""Sensors that measure only while their topic has a subscriber, as Noetic's
 gazebo_ros_laser and gazebo_ros_gpu_laser (gazebo_ros_pkgs noetic-devel f9e1a46,
 gazebo_plugins/src/gazebo_ros_laser.cpp:154-155: "sensor generation off by default";
 :158-176: the sensor's scans are taken from the first /scan subscriber to the last;
@@ -103,3 +103,22 @@ def test_p3d_computes_only_while_heard_and_keeps_its_slots(world, bus):
     assert len(stamps) >= 10
     assert all(later - earlier == 20_000_000 for earlier, later in zip(stamps, stamps[1:]))
     assert stamps[0] - UNHEARD_SECONDS * 1e9 <= 20_000_000
+
+
+def test_a_bumper_reports_only_while_heard(world, bus):
+    """gazebo_ros_bumper's OnContact returns at once without subscribers
+    (gazebo_plugins/src/gazebo_ros_bumper.cpp:142-143): a 50 Hz bumper plate publishes
+    nothing unheard, then one message per 20 ms slot."""
+    from sim_bridge.plugins.bumper import Bumper
+    from test_bumper import robot
+    world.spawn_urdf("bot", robot(), (0, 0, 0.11))
+    plate = next(p for p in world.models["bot"].plugins if isinstance(p, Bumper))
+    topic = plate.output.topic
+    bus.unheard.add(topic)
+    run(world, UNHEARD_SECONDS)
+    assert topic not in bus.published
+    bus.unheard.discard(topic)
+    run(world, HEARD_SECONDS)
+    stamps = [message.header.stamp.to_nsec() for message in bus.published[topic]]
+    assert len(stamps) >= 10
+    assert all(later - earlier == 20_000_000 for earlier, later in zip(stamps, stamps[1:]))

@@ -120,7 +120,9 @@ class Bumper(Plugin):
         return f"{model}::{link_name}::{link_name}_collision"
 
     def after_step(self, now_ns: int) -> None:
-        if not self.rate.due(now_ns):
+        # nothing for nobody, as Noetic's OnContact (gazebo_ros_pkgs noetic-devel f9e1a46,
+        # gazebo_plugins/src/gazebo_ros_bumper.cpp:142-143)
+        if not self.rate.due(now_ns) or not self.context.bus.listened(self.output):
             return
         message = ContactsState(states=self.contacts())
         message.header.stamp = stamp(now_ns)
