@@ -1,7 +1,10 @@
 // robot_model_loader::RobotModelLoader: the URDF and SRDF from the parameter server (searched from the private
 // namespace as rdf_loader.cpp l. 64-93 searches them, noetic-devel) or from strings, and robot_description_planning's
-// joint limits as robot_model_loader.cpp l. 105-160 applies them.
+// joint limits as robot_model_loader.cpp l. 105-160 applies them; the groups' kinematics plugins as
+// loadKinematicsSolvers (l. 169-232) loads them.
 #include <moveit/robot_model_loader/robot_model_loader.h>
+
+#include <typeinfo>
 
 #include <ros/ros.h>
 #include <urdf/model.h>
@@ -36,7 +39,12 @@ RobotModelLoader::RobotModelLoader(const Options& opt)
   configure(opt);
 }
 
-RobotModelLoader::~RobotModelLoader() = default;
+RobotModelLoader::~RobotModelLoader()
+{
+  // the model holds the plugins: released before their loader (l. 60-67)
+  model_.reset();
+  kinematics_loader_.reset();
+}
 
 void RobotModelLoader::configure(const Options& opt)
 {
@@ -71,7 +79,47 @@ void RobotModelLoader::configure(const Options& opt)
   if (!robot_description_.empty())
     applyPlanningJointLimits(robot_description_ + "_planning/joint_limits/");
   if (opt.load_kinematics_solvers_)
-    ROS_DEBUG_NAMED(LOGNAME, "Kinematics plugins are not loaded by this RobotModelLoader: setFromIK uses KDL");
+    loadKinematicsSolvers();
+}
+
+void RobotModelLoader::loadKinematicsSolvers(const kinematics_plugin_loader::KinematicsPluginLoaderPtr& kloader)
+{
+  if (!model_ || !srdf_)
+    return;
+  kinematics_loader_ =
+      kloader ? kloader : std::make_shared<kinematics_plugin_loader::KinematicsPluginLoader>(robot_description_);
+  const moveit::core::SolverAllocatorFn allocator = kinematics_loader_->getLoaderFunction(srdf_);
+  const std::vector<std::string>& groups = kinematics_loader_->getKnownGroups();
+  if (groups.empty() && !model_->getJointModelGroups().empty())
+    ROS_WARN_NAMED(LOGNAME, "No kinematics plugins defined. Fill and load kinematics.yaml!");
+
+  // a group gets its solver when the solver supports it (l. 191-220); a group without one (its reason logged by the
+  // loader) is answered by RobotState's KDL solver
+  std::map<std::string, moveit::core::SolverAllocatorFn> allocators;
+  for (const std::string& group : groups)
+  {
+    if (!model_->hasJointModelGroup(group))
+      continue;
+    const moveit::core::JointModelGroup* jmg = model_->getJointModelGroup(group);
+    const kinematics::KinematicsBasePtr solver = allocator(jmg);
+    if (!solver)
+      continue;
+    std::string error;
+    if (solver->supportsGroup(jmg, &error))
+      allocators[group] = allocator;
+    else
+    {
+      const auto& instance = *solver;
+      ROS_ERROR_NAMED(LOGNAME, "Kinematics solver %s does not support joint group %s.  Error: %s",
+                      typeid(instance).name(), group.c_str(), error.c_str());
+    }
+  }
+  model_->setKinematicsAllocators(allocators);
+
+  // kinematics_solver_timeout: the group's default IK timeout, its solver's too (l. 222-230)
+  for (const auto& entry : kinematics_loader_->getIKTimeout())
+    if (model_->hasJointModelGroup(entry.first))
+      model_->getJointModelGroup(entry.first)->setDefaultIKTimeout(entry.second);
 }
 
 void RobotModelLoader::applyPlanningJointLimits(const std::string& prefix_base)

@@ -1,5 +1,5 @@
 // MoveIt's shared planning-interface objects (common_objects.cpp, noetic-devel 7c0343f0): one TF buffer and one robot
-// model per description for the process, shared while in use.
+// model per description for the process (with its groups' kinematics plugins), shared while in use.
 #include <moveit/common_planning_interface_objects/common_objects.h>
 
 #include <map>
@@ -41,8 +41,13 @@ moveit::core::RobotModelConstPtr getSharedRobotModel(const std::string& robot_de
   moveit::core::RobotModelConstPtr model = models[robot_description].lock();
   if (!model)
   {
-    robot_model_loader::RobotModelLoader loader(robot_description);
-    model = loader.getModel();
+    // the groups' kinematics plugins loaded too, and the loader kept as long as the model is (an aliasing pointer,
+    // common_objects.cpp l. 116-132)
+    robot_model_loader::RobotModelLoader::Options options(robot_description);
+    options.load_kinematics_solvers_ = true;
+    auto loader = std::make_shared<robot_model_loader::RobotModelLoader>(options);
+    if (loader->getModel())
+      model = moveit::core::RobotModelConstPtr(loader, loader->getModel().get());
     models[robot_description] = model;
   }
   return model;

@@ -1,9 +1,11 @@
 // moveit::core::RobotState: positions, forward kinematics through the model's joint transforms, and setFromIK. The
 // behaviour reproduced from MoveIt (noetic-devel moveit_core/robot_state/src/robot_state.cpp): a link's global
 // transform is its parent's, times its joint origin, times the joint's motion; setFromIK answers with the group's
-// kinematics solver when it has one (l. 1561-1600: pose brought into the solver's base frame, the group's variables
-// mapped through the solver's joint bijection), else (here, not in MoveIt) with KDL's Levenberg-Marquardt solver
-// restarted from random seeds within bounds until the timeout.
+// kinematics solver when it has one, as l. 1603-1832 do (pose into the solver's base frame, a rigidly attached frame
+// turned into the solver's tip, seed = the state's values, the validity callback as the solver's solution callback,
+// one searchPositionIK with the group's default timeout when none is given: noetic-devel's setFromIK makes no
+// attempts of its own, the solver restarts within the timeout), else (here, not in MoveIt, which fails without a
+// solver) with KDL's Levenberg-Marquardt solver restarted from random seeds within bounds until the timeout.
 #include <moveit/robot_state/robot_state.h>
 
 #include <cmath>
@@ -54,6 +56,11 @@ Eigen::Isometry3d poseToEigen(const geometry_msgs::Pose& pose)
                    .normalized()
                    .toRotationMatrix();
   return t;
+}
+
+std::string stripSlash(const std::string& frame)
+{
+  return !frame.empty() && frame[0] == '/' ? frame.substr(1) : frame;
 }
 
 geometry_msgs::Pose eigenToPose(const Eigen::Isometry3d& t)
@@ -637,11 +644,21 @@ const LinkModel* RobotState::getRigidlyConnectedParentLinkModel(const std::strin
   const LinkModel* link = robot_model_->getLinkModel(frame, &has_link);
   if (!has_link)
     return nullptr;
-  Eigen::Isometry3d t;
-  const LinkModel* parent = RobotModel::getRigidlyConnectedParentLinkModel(link, t, jmg);
+  // Up across fixed joints and, given a group, across joints the group does not move (robot_model.cpp
+  // getRigidlyConnectedParentLinkModel, l. 1280-1315 on noetic-devel): the link that moves a tool fixed to it
+  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+  auto rigid = [jmg](const JointModel* joint) {
+    return joint->getType() == JointModel::FIXED || (jmg && !jmg->getJointModels().empty() &&
+                                                     !jmg->hasJointModel(joint->getName()));
+  };
+  while (link->getParentLinkModel() && rigid(link->getParentJointModel()))
+  {
+    t = link->getJointOriginTransform() * t;
+    link = link->getParentLinkModel();
+  }
   if (transform)
     *transform = t;
-  return parent;
+  return link;
 }
 
 bool RobotState::getJacobian(const JointModelGroup* group, const LinkModel* link,
@@ -724,59 +741,159 @@ bool RobotState::setFromIK(const JointModelGroup* group, const Eigen::Isometry3d
                            double timeout, const GroupStateValidityCallbackFn& constraint,
                            const kinematics::KinematicsQueryOptions& options)
 {
+  return setFromIK(group, pose, tip, std::vector<double>(), timeout, constraint, options);
+}
+
+bool RobotState::setFromIK(const JointModelGroup* group, const Eigen::Isometry3d& pose, const std::string& tip,
+                           const std::vector<double>& consistency_limits, double timeout,
+                           const GroupStateValidityCallbackFn& constraint,
+                           const kinematics::KinematicsQueryOptions& options)
+{
   if (!group)
     return false;
+  if (group->getSolverInstance())
+    return setFromIKWithSolver(group, pose, tip, consistency_limits, timeout, constraint, options);
   if (timeout <= 0.0)
     timeout = group->getDefaultIKTimeout() > 0.0 ? group->getDefaultIKTimeout() : DEFAULT_IK_TIMEOUT;
-  if (group->getSolverInstance())
-    return setFromIKWithSolver(group, pose, tip, timeout, constraint, options);
-  const LinkModel* tip_link = robot_model_->getLinkModel(tip);
+  const LinkModel* tip_link = robot_model_->getLinkModel(stripSlash(tip));
   if (!tip_link)
     return false;
   return setFromIKWithKDL(group, pose, tip_link, timeout, constraint);
 }
 
-bool RobotState::setFromIKWithSolver(const JointModelGroup* group, const Eigen::Isometry3d& pose,
-                                     const std::string& tip, double timeout,
-                                     const GroupStateValidityCallbackFn& constraint,
-                                     const kinematics::KinematicsQueryOptions& options)
+bool RobotState::setToIKSolverFrame(Eigen::Isometry3d& pose, const kinematics::KinematicsBaseConstPtr& solver)
 {
-  const kinematics::KinematicsBaseConstPtr solver = group->getSolverInstance();
-  const std::string solver_tip = solver->getTipFrame();
-  if (tip != solver_tip && "/" + tip != solver_tip)
+  return setToIKSolverFrame(pose, solver->getBaseFrame());
+}
+
+bool RobotState::setToIKSolverFrame(Eigen::Isometry3d& pose, const std::string& ik_frame)
+{
+  // robot_state.cpp l. 1559-1575: a pose in the model frame, expressed in the solver's base link
+  const std::string frame = stripSlash(ik_frame);
+  if (frame == stripSlash(robot_model_->getModelFrame()))
+    return true;
+  const LinkModel* link = robot_model_->getLinkModel(frame);
+  if (!link)
   {
-    ROS_ERROR_NAMED(LOGNAME, "setFromIK: group '%s''s solver serves tip '%s', not '%s'", group->getName().c_str(),
-                    solver_tip.c_str(), tip.c_str());
+    ROS_ERROR_STREAM_NAMED(LOGNAME, "IK frame '" << ik_frame << "' does not exist.");
     return false;
   }
   updateLinkTransforms();
-  const Eigen::Isometry3d base = getFrameTransform(solver->getBaseFrame());
-  const geometry_msgs::Pose target = eigenToPose(base.inverse() * pose);
+  pose = getGlobalLinkTransform(link).inverse() * pose;
+  return true;
+}
+
+bool RobotState::setFromIKWithSolver(const JointModelGroup* group, const Eigen::Isometry3d& pose_in,
+                                     const std::string& tip_in, const std::vector<double>& consistency_limits,
+                                     double timeout, const GroupStateValidityCallbackFn& constraint,
+                                     const kinematics::KinematicsQueryOptions& options)
+{
+  // One pose for one tip, as robot_state.cpp's setFromIK (l. 1603-1832 on noetic-devel) handles it
+  const kinematics::KinematicsBaseConstPtr solver = group->getSolverInstance();
+  updateLinkTransforms();
+  const std::vector<std::string>& solver_tips = solver->getTipFrames();
+  std::vector<geometry_msgs::Pose> ik_queries(solver_tips.size());
+  std::vector<bool> tip_used(solver_tips.size(), false);
+
+  // the pose into the solver's base frame; a tip the solver does not know but that moves rigidly with one of its
+  // tips is turned into that tip's pose (l. 1678-1762)
+  Eigen::Isometry3d pose = pose_in;
+  const std::string pose_frame = stripSlash(tip_in);
+  if (!setToIKSolverFrame(pose, solver))
+    return false;
+  bool found = false;
+  std::size_t id = 0;
+  for (; id < solver_tips.size() && !found; ++id)
+  {
+    const std::string solver_tip = stripSlash(solver_tips[id]);
+    if (pose_frame == solver_tip)
+    {
+      found = true;
+      break;
+    }
+    Eigen::Isometry3d pose_parent_to_frame, tip_parent_to_tip;
+    const LinkModel* pose_parent = getRigidlyConnectedParentLinkModel(pose_frame, &pose_parent_to_frame, group);
+    if (!pose_parent)
+    {
+      ROS_ERROR_STREAM_NAMED(LOGNAME, "Pose frame '" << pose_frame << "' does not exist.");
+      return false;
+    }
+    const LinkModel* tip_parent = getRigidlyConnectedParentLinkModel(solver_tip, &tip_parent_to_tip, group);
+    if (!tip_parent)
+    {
+      ROS_ERROR_STREAM_NAMED(LOGNAME, "Solver tip frame '" << solver_tip << "' does not exist.");
+      return false;
+    }
+    if (pose_parent == tip_parent)
+    {
+      pose = pose * pose_parent_to_frame.inverse() * tip_parent_to_tip;
+      found = true;
+      break;
+    }
+  }
+  if (!found)
+  {
+    std::string available;
+    for (const std::string& frame : solver_tips)
+      available += frame + ", ";
+    ROS_ERROR_NAMED(LOGNAME, "Cannot compute IK for query 0 pose reference frame '%s'", pose_frame.c_str());
+    ROS_ERROR_NAMED(LOGNAME, "Available tip frames: [%s]", available.c_str());
+    return false;
+  }
+  ik_queries[id] = eigenToPose(pose);
+  tip_used[id] = true;
+
+  // a solver with several tips gets the others' current poses (l. 1764-1795)
+  for (std::size_t other = 0; other < solver_tips.size(); ++other)
+  {
+    if (tip_used[other])
+      continue;
+    const LinkModel* link = robot_model_->getLinkModel(stripSlash(solver_tips[other]));
+    if (!link)
+    {
+      ROS_ERROR_STREAM_NAMED(LOGNAME, "Solver tip frame '" << solver_tips[other] << "' does not exist.");
+      return false;
+    }
+    Eigen::Isometry3d current = getGlobalLinkTransform(link);
+    if (!setToIKSolverFrame(current, solver))
+      return false;
+    ik_queries[other] = eigenToPose(current);
+  }
+
+  // no timeout given: the group's default, kinematics_solver_timeout (l. 1797-1799)
+  if (timeout < std::numeric_limits<double>::epsilon())
+    timeout = group->getDefaultIKTimeout();
+
+  // the validity callback sees the candidate in the group's variable order (ikCallbackFnAdapter, l. 1539-1551, 1801-1807)
   const std::vector<unsigned int>& bijection = group->getKinematicsSolverJointBijection();
-  std::vector<double> group_values;
-  copyJointGroupPositions(group, group_values);
-  std::vector<double> seed(bijection.size());
-  for (std::size_t i = 0; i < bijection.size(); ++i)
-    seed[i] = group_values[bijection[i]];
-  const std::vector<double> consistency_limits;
-  std::vector<double> solution;
-  moveit_msgs::MoveItErrorCodes error;
   kinematics::KinematicsBase::IKCallbackFn callback;
   if (constraint)
-    callback = [&](const geometry_msgs::Pose&, const std::vector<double>& candidate, moveit_msgs::MoveItErrorCodes& ec) {
-      std::vector<double> values = group_values;
+    callback = [this, group, &constraint, &bijection](const geometry_msgs::Pose&, const std::vector<double>& candidate,
+                                                      moveit_msgs::MoveItErrorCodes& error_code) {
+      std::vector<double> values(bijection.size());
       for (std::size_t i = 0; i < bijection.size(); ++i)
         values[bijection[i]] = candidate[i];
-      RobotState copy(*this);
-      copy.setJointGroupPositions(group, values);
-      ec.val = constraint(&copy, group, values.data()) ? moveit_msgs::MoveItErrorCodes::SUCCESS :
-                                                           moveit_msgs::MoveItErrorCodes::GOAL_VIOLATES_PATH_CONSTRAINTS;
+      error_code.val = constraint(this, group, values.data()) ? moveit_msgs::MoveItErrorCodes::SUCCESS :
+                                                                 moveit_msgs::MoveItErrorCodes::NO_IK_SOLUTION;
     };
-  if (!solver->searchPositionIK(target, seed, timeout, consistency_limits, solution, callback, error, options))
-    return false;
+
+  // the seed: the state's own values of the solver's joints (l. 1809-1816)
+  std::vector<double> initial_values;
+  copyJointGroupPositions(group, initial_values);
+  std::vector<double> seed(bijection.size());
   for (std::size_t i = 0; i < bijection.size(); ++i)
-    group_values[bijection[i]] = solution[i];
-  setJointGroupPositions(group, group_values);
+    seed[i] = initial_values[bijection[i]];
+
+  // one search; the solver itself restarts within the timeout as it sees fit (l. 1818-1831)
+  std::vector<double> ik_solution;
+  moveit_msgs::MoveItErrorCodes error;
+  if (!solver->searchPositionIK(ik_queries, seed, timeout, consistency_limits, ik_solution, callback, error, options,
+                                this))
+    return false;
+  std::vector<double> solution(bijection.size());
+  for (std::size_t i = 0; i < bijection.size(); ++i)
+    solution[bijection[i]] = ik_solution[i];
+  setJointGroupPositions(group, solution);
   return true;
 }
 

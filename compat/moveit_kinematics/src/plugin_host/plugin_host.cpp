@@ -2,15 +2,15 @@
 // pluginlib) inside the Python move_group's process.
 //
 // What MoveIt's move_group does with a kinematics.yaml entry (kinematics_plugin_loader.cpp on noetic-devel,
-// KinematicsLoaderImpl::allocKinematicsSolver l. 127-209), done here for one group at a time:
-// - one pluginlib::ClassLoader<kinematics::KinematicsBase>("moveit_core", "kinematics::KinematicsBase") for the
-//   process (l. 73-75), createUniqueInstance(lookup name) (l. 168);
+// KinematicsLoaderImpl::allocKinematicsSolver l. 127-209), done here for one group at a time with the C++
+// RobotModelLoader's own steps (moveit_ros_planning's library moveit_kinematics_plugin_loader:
+// kinematics_plugin_loader::loadKinematicsPlugin, which cites the lines):
+// - the process's one pluginlib loader of kinematics::KinematicsBase, createUniqueInstance(lookup name);
 // - the robot model built from the URDF and SRDF move_group read (its joint bounds set to the ones move_group plans
 //   with: robot_description_planning's joint limits applied, as RobotModelLoader applies them before plugins load);
 // - initialize(robot_model, group, base, tips, search_resolution) with base = the parent link of the group's first
-//   link (else the model frame), leading '/' removed (l. 158-160, 177-178) and tips = kinematics_solver_ik_links when
-//   given, else the group's last link (chooseTipFrames l. 88-125); when it fails, the string-based initialize with
-//   the robot description's name (l. 180-181);
+//   link (else the model frame) and tips = kinematics_solver_ik_links when given (move_group read them), else the
+//   group's last link (chooseTipFrames l. 88-125); when it fails, the string-based initialize;
 // - setDefaultTimeout(kinematics_solver_timeout) (l. 189, the group's default IK timeout).
 // The plugin reads its own parameters (lookupParam: robot_description_kinematics/<group>/...) through roscpp, which
 // this module initialises once per process under its own node name (the rospy node already owns /move_group; a
@@ -21,8 +21,8 @@
 // mutex is taken (a thread holding the lock while it waits for the mutex would block the solution callback of the
 // thread that holds the mutex), and taken again only to call the Python solution callback.
 #include <moveit/kinematics_base/kinematics_base.h>
+#include <moveit/kinematics_plugin_loader/kinematics_plugin_loader.h>
 #include <moveit/robot_model/robot_model.h>
-#include <pluginlib/class_loader.hpp>
 #include <pybind11/functional.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -41,30 +41,16 @@ namespace py = pybind11;
 
 namespace
 {
-// pluginlib's names of the base class and of the package whose plugins export it (kinematics_plugin_loader.cpp l. 74)
-const char* const BASE_PACKAGE = "moveit_core";
-const char* const BASE_CLASS = "kinematics::KinematicsBase";
-
 std::unique_ptr<ros::NodeHandle> rosNode;
 // callbacks a plugin subscribes (tf, topics, timers) run on roscpp's global queue: one thread, as move_group's own
 // AsyncSpinner (move_group.cpp l. 206-207 on noetic-devel)
 std::unique_ptr<ros::AsyncSpinner> spinner;
 const uint32_t SPINNER_THREADS = 1;
 
-// Why a plugin could not be loaded (moveit_kinematics._plugin_host.PluginError in Python)
-class LoadError : public std::runtime_error
-{
-public:
-  using std::runtime_error::runtime_error;
-};
-
-// One loader for the process, as move_group keeps one. Never destroyed: the libraries it opened must stay loaded as
-// long as any solver made from them may be destroyed (Python frees its objects after C++'s static destructors ran).
-pluginlib::ClassLoader<kinematics::KinematicsBase>& Loader()
-{
-  static auto* loader = new pluginlib::ClassLoader<kinematics::KinematicsBase>(BASE_PACKAGE, BASE_CLASS);
-  return *loader;
-}
+// Why a plugin could not be loaded (moveit_kinematics._plugin_host.PluginError in Python). The plugins come from the
+// process's one loader (kinematics_plugin_loader::classLoader), never destroyed: Python frees its objects after
+// C++'s static destructors ran, and the libraries must stay loaded until then.
+using LoadError = kinematics_plugin_loader::PluginLoadError;
 
 bool InitRos(const std::string& node_name, const std::string& ns)
 {
@@ -221,11 +207,6 @@ moveit::core::RobotModelPtr BuildModel(const std::string& urdf_text, const std::
   return model;
 }
 
-std::string StripSlash(const std::string& frame)
-{
-  return !frame.empty() && frame[0] == '/' ? frame.substr(1) : frame;
-}
-
 // The plugin named `lookup_name` for `group`, initialised as MoveIt initialises it; LoadError saying why not
 std::shared_ptr<Solver> Load(const std::string& lookup_name, const std::string& urdf_text,
                              const std::string& srdf_text,
@@ -235,8 +216,7 @@ std::shared_ptr<Solver> Load(const std::string& lookup_name, const std::string& 
 {
   py::gil_scoped_release release;
   if (!ros::isInitialized())
-    throw LoadError("roscpp is not initialised (call init_ros first): plugins read their parameters "
-                             "through it");
+    throw LoadError("roscpp is not initialised (call init_ros first): plugins read their parameters through it");
   moveit::core::RobotModelPtr model = BuildModel(urdf_text, srdf_text, bounds);
   const moveit::core::JointModelGroup* jmg = model->getJointModelGroup(group);
   if (!jmg)
@@ -244,49 +224,10 @@ std::shared_ptr<Solver> Load(const std::string& lookup_name, const std::string& 
   const auto& links = jmg->getLinkModels();
   if (links.empty())
     throw LoadError("group '" + group + "' has no links");
-  const moveit::core::LinkModel* parent = links.front()->getParentJointModel()->getParentLinkModel();
-  const std::string base = StripSlash(parent ? parent->getName() : model->getModelFrame());
   const std::vector<std::string> tips = ik_links.empty() ? std::vector<std::string>{ links.back()->getName() } :
                                                            ik_links;
-
-  // pluginlib's loader is not thread-safe; MoveIt takes a lock around it too (kinematics_plugin_loader.cpp l. 162-163)
-  static std::mutex loader_mutex;
-  std::lock_guard<std::mutex> lock(loader_mutex);
-  pluginlib::ClassLoader<kinematics::KinematicsBase>& loader = Loader();
-  if (!loader.isClassAvailable(lookup_name))
-  {
-    std::string known;
-    for (const auto& name : loader.getDeclaredClasses())
-      known += (known.empty() ? "" : ", ") + name;
-    throw LoadError("pluginlib knows no plugin '" + lookup_name + "' of base class " + BASE_CLASS +
-                             " (declared: " + (known.empty() ? "none" : known) + ")");
-  }
-  kinematics::KinematicsBasePtr plugin;
-  try
-  {
-    plugin = loader.createUniqueInstance(lookup_name);
-  }
-  catch (const pluginlib::PluginlibException& e)
-  {
-    throw LoadError(std::string("pluginlib could not create it: ") + e.what());
-  }
-  bool initialized = false;
-  try
-  {
-    initialized = plugin->initialize(*model, group, base, tips, search_resolution);
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
-    if (!initialized)
-      initialized = plugin->initialize(robot_description, group, base, tips, search_resolution);
-#pragma GCC diagnostic pop
-  }
-  catch (const std::exception& e)
-  {
-    throw LoadError(std::string("its initialize() threw: ") + e.what());
-  }
-  if (!initialized)
-    throw LoadError("its initialize() returned false for group '" + group + "' (base '" + base +
-                             "', tip '" + tips.front() + "')");
+  const kinematics::KinematicsBasePtr plugin =
+      kinematics_plugin_loader::loadKinematicsPlugin(lookup_name, *jmg, tips, search_resolution, robot_description);
   plugin->setDefaultTimeout(timeout);
   return std::make_shared<Solver>(model, plugin, lookup_name);
 }

@@ -8,8 +8,9 @@
 // tip), end-effector data (getEndEffectorName, getEndEffectorParentGroup, getAttachedEndEffectorNames,
 // getEndEffectorTips, getOnlyOneEndEffectorTip), kinematics solver slots (setSolverAllocators, getSolverInstance,
 // canSetStateFromIK, default IK timeout).
-// getSolverInstance() is null until a kinematics solver is allocated for the group: RobotModelLoader does not load
-// kinematics plugins yet; RobotState::setFromIK then solves with the workspace's KDL solver.
+// getSolverInstance() is null until a kinematics solver is allocated for the group: robot_model_loader::
+// RobotModelLoader (moveit_ros_planning) allocates the kinematics.yaml's C++ plugin; a group without one (MoveIt's
+// own KDL/LMA/TRAC-IK names, or a plugin that could not be loaded) is solved by RobotState::setFromIK's KDL solver.
 #pragma once
 
 #include <map>

@@ -7,9 +7,10 @@
 // or a given generator), setToRandomPositionsNearBy, forward kinematics (update, updateLinkTransforms,
 // getGlobalLinkTransform, getJointTransform, getFrameTransform, knowsFrameTransform: link frames and the model
 // frame), bounds (satisfiesBounds, enforceBounds, harmonizePositions), distance, interpolate, getJacobian (revolute
-// and prismatic joints), setFromIK (a group's loaded kinematics solver when it has one, else the workspace's KDL
-// solver: Levenberg-Marquardt, restarted from random seeds until the timeout), printStatePositions, printStateInfo,
-// printTransforms.
+// and prismatic joints), setFromIK (a group's loaded kinematics solver when it has one, called as robot_state.cpp's
+// setFromIK calls it on noetic-devel: see robot_state.cpp; else, where MoveIt would fail with "No kinematics solver
+// instantiated", the workspace's KDL solver: Levenberg-Marquardt, restarted from random seeds until the timeout),
+// setToIKSolverFrame, printStatePositions, printStateInfo, printTransforms.
 // Not provided: attached bodies (attachBody, getAttachedBodies...: moveit::core::AttachedBody needs geometric_shapes,
 // which Debian does not package; attach objects through move_group), collision body transforms, robot markers,
 // setFromDiffIK, computeCartesianPath (ask move_group's compute_cartesian_path), accelerations, dynamics.
@@ -241,6 +242,14 @@ public:
   {
     return setFromIK(group, pose, tip, timeout, constraint, options);
   }
+  /// As above, with the solver's consistency limits (how far each of its joints may move from the seed)
+  bool setFromIK(const JointModelGroup* group, const Eigen::Isometry3d& pose, const std::string& tip,
+                 const std::vector<double>& consistency_limits, double timeout = 0.0,
+                 const GroupStateValidityCallbackFn& constraint = GroupStateValidityCallbackFn(),
+                 const kinematics::KinematicsQueryOptions& options = kinematics::KinematicsQueryOptions());
+  /// @e pose (model frame) into the frame of the IK solver (its base frame); false when that frame is unknown
+  bool setToIKSolverFrame(Eigen::Isometry3d& pose, const kinematics::KinematicsBaseConstPtr& solver);
+  bool setToIKSolverFrame(Eigen::Isometry3d& pose, const std::string& ik_frame);
 
   /// The geometric Jacobian (6 x active variables: linear rows first) of @e link's @e reference_point_position, in
   /// the model frame, for the group's chain; quaternion representation is not provided (false and a ROS error)
@@ -347,7 +356,8 @@ private:
   bool setFromIKWithKDL(const JointModelGroup* group, const Eigen::Isometry3d& pose, const LinkModel* tip,
                         double timeout, const GroupStateValidityCallbackFn& constraint);
   bool setFromIKWithSolver(const JointModelGroup* group, const Eigen::Isometry3d& pose, const std::string& tip,
-                           double timeout, const GroupStateValidityCallbackFn& constraint,
+                           const std::vector<double>& consistency_limits, double timeout,
+                           const GroupStateValidityCallbackFn& constraint,
                            const kinematics::KinematicsQueryOptions& options);
 
   RobotModelConstPtr robot_model_;

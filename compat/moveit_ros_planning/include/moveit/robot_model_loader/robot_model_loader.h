@@ -9,13 +9,19 @@
 // An absent or unparsable URDF gives a ROS error naming its parameter and a null getModel(); an absent or unparsable
 // SRDF gives a ROS error naming its parameter and a model without groups, as MoveIt builds it then
 // (robot_model_loader.cpp l. 98-103).
-// Not provided: kinematics plugin loading (load_kinematics_solvers_ is accepted; groups keep no solver, and
-// RobotState::setFromIK uses the workspace's KDL solver), getRDFLoader(), getKinematicsPluginLoader(),
-// loadKinematicsSolvers(): moveit/rdf_loader and moveit/kinematics_plugin_loader are not here.
+// Kinematics solvers (load_kinematics_solvers_, the default): loadKinematicsSolvers() as robot_model_loader.cpp
+// l. 169-232 does it: a kinematics_plugin_loader::KinematicsPluginLoader reads each group's
+// <robot_description>_kinematics/<group>/kinematics_solver and loads that plugin through pluginlib, the groups whose
+// solver supports them get it (JointModelGroup::getSolverInstance), and kinematics_solver_timeout becomes the group's
+// default IK timeout. MoveIt's own solver names (KDL, LMA, cached, service, TRAC-IK) load no C++ plugin here: there
+// is no C++ library of them in this workspace, and RobotState::setFromIK answers their groups with its KDL solver;
+// so it does for a group whose plugin could not be loaded (the reason is logged).
+// Not provided: getRDFLoader() (moveit/rdf_loader is not here).
 #pragma once
 
 #include <string>
 
+#include <moveit/kinematics_plugin_loader/kinematics_plugin_loader.h>
 #include <moveit/macros/class_forward.h>
 #include <moveit/robot_model/robot_model.h>
 #include <srdfdom/model.h>
@@ -67,6 +73,15 @@ public:
   {
     return srdf_;
   }
+  /// The loader of the model's kinematics plugins (null until loadKinematicsSolvers ran)
+  const kinematics_plugin_loader::KinematicsPluginLoaderPtr& getKinematicsPluginLoader() const
+  {
+    return kinematics_loader_;
+  }
+  /// Loads the groups' kinematics solvers into the model (done by the constructors unless load_kinematics_solvers_
+  /// is false); @e kloader replaces the loader made from the robot description
+  void loadKinematicsSolvers(const kinematics_plugin_loader::KinematicsPluginLoaderPtr& kloader =
+                                 kinematics_plugin_loader::KinematicsPluginLoaderPtr());
 
 private:
   void configure(const Options& opt);
@@ -77,5 +92,6 @@ private:
   std::string robot_description_;
   urdf::ModelInterfaceSharedPtr urdf_;
   srdf::ModelSharedPtr srdf_;
+  kinematics_plugin_loader::KinematicsPluginLoaderPtr kinematics_loader_;
 };
 }  // namespace robot_model_loader
