@@ -10,6 +10,12 @@ the plugin named in robot_description_kinematics.
   by the plugin (its log line per solved request) with joints whose forward kinematics is
   the pose to 1e-6 m and 1e-6 rad; a collision-aware request (the scene's check as the
   plugin's solution callback), a pose goal and a Cartesian path are solved through it.
+- the same plugin in a C++ client (six_axis_arm_demo's ik_round_trip node, built in the same
+  overlay): robot_model_loader::RobotModelLoader gives the group the IKFast plugin (its class,
+  base and tip, kinematics.yaml's timeout), 50 RobotState::setFromIK
+  round trips and MoveGroupInterface::setJointValueTarget(pose) are solved by it in the node's
+  process (the plugin's lines in the node's log grow by exactly those requests, move_group's do
+  not), each answer's forward kinematics (urdf_tools) the pose to 1e-6 m and 1e-6 rad.
 - a kinematics.yaml naming a plugin that is not installed: move_group says why and solves
   with KDL; a plugin whose initialize() refuses the group (a tip it was not written for):
   the same, with that reason.
@@ -22,6 +28,7 @@ import sys
 
 import numpy as np
 import pytest
+import yaml
 
 import headless
 from urdf_tools import load_urdf
@@ -30,7 +37,7 @@ from urdf_tools.kinematics import link_transform
 FIXTURE = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
                        "fixtures", "moveit_ws", "src")
 PACKAGES = ("six_axis_arm_description", "six_axis_arm_moveit_config",
-            "six_axis_arm_ikfast_manipulator_plugin")
+            "six_axis_arm_ikfast_manipulator_plugin", "six_axis_arm_demo")
 IKFAST = "six_axis_arm_manipulator/IKFastKinematicsPlugin"
 MISSING = "six_axis_arm_gripper/IKFastKinematicsPlugin"
 JOINTS = ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint", "wrist_1_joint",
@@ -49,6 +56,10 @@ SUCCESS = 1                # moveit_msgs/MoveItErrorCodes
 READY = [0.0, 0.4, 0.8, 0.3, 0.5, 0.0]   # the config's "ready" (collision-free)
 CARTESIAN_DROP = 0.05      # m: the Cartesian path's straight line down
 CARTESIAN_STEP = 0.01      # m: its max_step
+CPP_ROUND_TRIPS = 50       # the C++ node's setFromIK round trips
+CPP_NODE_LIMIT = 120.0     # s for the C++ node's run
+# the class IKFast's generated plugin defines
+IKFAST_CLASS = "ikfast_kinematics_plugin::IKFastKinematicsPlugin"
 
 
 @pytest.fixture(scope="module")
@@ -244,6 +255,54 @@ def test_move_group_answers_ik_and_pose_goals_with_the_ikfast_plugin(overlay, ro
         steps = round(CARTESIAN_DROP / CARTESIAN_STEP)
         headless.wait_until(lambda: solved_lines(launch) >= before + 1 + steps, LOG_LIMIT,
                             "the IK of each Cartesian step by the plugin in move_group's log")
+
+        # the same plugin in a C++ client, loaded by its RobotModelLoader
+        in_move_group = solved_lines(launch)
+        check_cpp_client(workspace, env, urdf)
+        assert solved_lines(launch) == in_move_group, "the C++ client's IK was move_group's"
+
+
+def values_after(words, label, count):
+    start = words.index(label) + 1
+    return [float(v) for v in words[start:start + count]]
+
+
+def check_cpp_client(workspace, env, urdf):
+    """six_axis_arm_demo's ik_round_trip against the running demo (see the module)."""
+    node = subprocess.run(["rosrun", "six_axis_arm_demo", "ik_round_trip",
+                           f"_round_trips:={CPP_ROUND_TRIPS}"], env=env, capture_output=True,
+                          text=True, timeout=CPP_NODE_LIMIT, check=False)
+    output = node.stdout + node.stderr
+    assert node.returncode == 0, output[-3000:]
+    with open(workspace / "src" / "six_axis_arm_ikfast_manipulator_plugin" / "config" /
+              "kinematics.yaml") as stream:
+        entry = yaml.safe_load(stream)["manipulator"]
+    solver = next(line.split() for line in output.splitlines() if line.startswith("SOLVER "))
+    assert solver[1:6] == [IKFAST_CLASS, "base", "base_link", "tip", "tool0"], solver
+    assert float(solver[7]) == pytest.approx(entry["kinematics_solver_timeout"])
+    # the search resolution reached initialize(); getSearchDiscretization() reports it per redundant
+    # joint and 0 without one, as a six-joint IKFast solver has none (kinematics_base.h l. 516-553)
+    assert entry["kinematics_solver_search_resolution"] > 0 and float(solver[9]) == 0.0
+
+    trips = [line.split() for line in output.splitlines() if line.startswith("ROUND_TRIP ")]
+    assert len(trips) == CPP_ROUND_TRIPS
+    worst_metres = worst_radians = 0.0
+    for words in trips:
+        assert words[3] == "1", " ".join(words)
+        wanted = tool_pose(urdf, values_after(words, "target", len(JOINTS)))
+        reached = tool_pose(urdf, values_after(words, "solution", len(JOINTS)))
+        worst_metres = max(worst_metres, float(np.linalg.norm(reached[:3, 3] - wanted[:3, 3])))
+        worst_radians = max(worst_radians, rotation_angle(reached, wanted))
+    assert worst_metres <= SAME_POSE and worst_radians <= SAME_POSE, (worst_metres, worst_radians)
+
+    target = next(line.split() for line in output.splitlines() if line.startswith("POSE_TARGET "))
+    assert target[2] == "1" and target[4] == "tool0", " ".join(target)
+    wanted = tool_pose(urdf, values_after(target, "goal", len(JOINTS)))
+    reached = tool_pose(urdf, values_after(target, "solution", len(JOINTS)))
+    assert np.linalg.norm(reached[:3, 3] - wanted[:3, 3]) <= SAME_POSE
+    assert rotation_angle(reached, wanted) <= SAME_POSE
+    # each of the node's requests was the plugin's, in the node's process
+    assert output.count(SOLVED_LINE) == CPP_ROUND_TRIPS + 1, output.count(SOLVED_LINE)
 
 
 def test_a_plugin_that_is_not_installed_falls_back_to_kdl_with_the_reason(overlay, ros_env,
