@@ -109,14 +109,29 @@ geometry_msgs::Pose eigenToPose(const Eigen::Isometry3d& transform)
   return pose;
 }
 
+// How a call reports an action that did not succeed, as noetic-devel's move_group_interface.cpp does: plan() and
+// execute() at INFO as "<state>: <text>" (l. 899-900, 938-939); move(), pick() and place() at WARN as
+// "Fail: <state>: <text>" (l. 854-855, 764-765, 734-735)
+enum class FailureReport
+{
+  INFO_STATE,
+  WARN_FAIL
+};
+
 template <typename Action>
-moveit::core::MoveItErrorCode waitForResult(actionlib::SimpleActionClient<Action>& client, const char* name)
+moveit::core::MoveItErrorCode waitForResult(actionlib::SimpleActionClient<Action>& client, const char* name,
+                                            FailureReport report)
 {
   if (!client.waitForResult())
     ROS_INFO_NAMED(LOGNAME, "%s action returned early", name);
   const actionlib::SimpleClientGoalState state = client.getState();
   if (state != actionlib::SimpleClientGoalState::SUCCEEDED)
-    ROS_INFO_STREAM_NAMED(LOGNAME, name << ": " << state.toString() << ": " << state.getText());
+  {
+    if (report == FailureReport::WARN_FAIL)
+      ROS_WARN_STREAM_NAMED(LOGNAME, "Fail: " << state.toString() << ": " << state.getText());
+    else
+      ROS_INFO_STREAM_NAMED(LOGNAME, state.toString() << ": " << state.getText());
+  }
   auto result = client.getResult();
   // a goal lost before move_group answered leaves no result: a failure to communicate
   return result ? moveit::core::MoveItErrorCode(result->error_code) :
@@ -416,7 +431,7 @@ public:
     constructMotionPlanRequest(goal.request);
     fillPlanningOptions(goal.planning_options, true);
     move_client_->sendGoal(goal);
-    const moveit::core::MoveItErrorCode code = waitForResult(*move_client_, "MoveGroup");
+    const moveit::core::MoveItErrorCode code = waitForResult(*move_client_, "MoveGroup", FailureReport::INFO_STATE);
     auto result = move_client_->getResult();
     if (result && move_client_->getState() == actionlib::SimpleClientGoalState::SUCCEEDED)
     {
@@ -440,7 +455,7 @@ public:
     move_client_->sendGoal(goal);
     if (!wait)
       return moveit::core::MoveItErrorCode::SUCCESS;
-    return waitForResult(*move_client_, "MoveGroup");
+    return waitForResult(*move_client_, "MoveGroup", FailureReport::WARN_FAIL);
   }
 
   moveit::core::MoveItErrorCode execute(const moveit_msgs::RobotTrajectory& trajectory, bool wait)
@@ -455,7 +470,7 @@ public:
     execute_client_->sendGoal(goal);
     if (!wait)
       return moveit::core::MoveItErrorCode::SUCCESS;
-    return waitForResult(*execute_client_, "ExecuteTrajectory");
+    return waitForResult(*execute_client_, "ExecuteTrajectory", FailureReport::INFO_STATE);
   }
 
   double computeCartesianPath(const std::vector<geometry_msgs::Pose>& waypoints, double step, double jump_threshold,
@@ -620,7 +635,7 @@ public:
       return moveit::core::MoveItErrorCode::COMMUNICATION_FAILURE;
     }
     client.sendGoal(goal);
-    return waitForResult(client, name);
+    return waitForResult(client, name, FailureReport::WARN_FAIL);
   }
 
   Options opt_;

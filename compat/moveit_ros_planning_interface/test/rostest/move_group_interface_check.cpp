@@ -2,6 +2,8 @@
 // (move_group_interface.cpp, noetic-devel 7c0343f0) for wrong arguments, the MotionPlanRequest it builds, and that
 // plan, move and attach reach move_group and come back with what /joint_states then says.
 #include <algorithm>
+#include <mutex>
+#include <utility>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -10,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <moveit/move_group_interface/move_group_interface.h>
 #include <moveit/planning_scene_interface/planning_scene_interface.h>
+#include <ros/console.h>
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
 #include <shape_msgs/SolidPrimitive.h>
@@ -34,6 +37,39 @@ const double MOTION_START_WAIT = 10.0;   // s (wall): planning and the start of 
 const double STOP_WAIT = 10.0;           // s: the move's result after the stop
 const double POLL = 0.05;                // s (wall)
 const double SCENE_WAIT = 5.0;           // s (wall): a diff on the planning_scene topic applied
+// a position the px100 (reach under 0.4 m) cannot have: move_group aborts the goal
+const double OUT_OF_REACH_X = 5.0;  // m
+
+// Keeps what this process logs through rosconsole, level and text
+class LogRecorder : public ros::console::LogAppender
+{
+public:
+  void log(ros::console::Level level, const char* str, const char*, const char*, int) override
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    lines_.emplace_back(level, str);
+  }
+  std::vector<std::pair<ros::console::Level, std::string>> take()
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return std::move(lines_);
+  }
+
+private:
+  std::mutex mutex_;
+  std::vector<std::pair<ros::console::Level, std::string>> lines_;
+};
+
+// the lines starting with `prefix`, by level
+std::vector<ros::console::Level> levelsOf(const std::vector<std::pair<ros::console::Level, std::string>>& lines,
+                                          const std::string& prefix)
+{
+  std::vector<ros::console::Level> levels;
+  for (const auto& line : lines)
+    if (line.second.compare(0, prefix.size(), prefix) == 0)
+      levels.push_back(line.first);
+  return levels;
+}
 }  // namespace
 
 class MoveGroupInterfaceTest : public ::testing::Test
@@ -305,6 +341,30 @@ TEST_F(MoveGroupInterfaceTest, AttachesAndDetachesThroughTheScene)
   EXPECT_EQ(waitFor({ "test_box" }), std::vector<std::string>{ "test_box" });
   scene.removeCollisionObjects({ "test_box" });
   EXPECT_TRUE(waitFor({}).empty());
+}
+
+// A goal move_group aborts is reported as noetic-devel's MoveGroupInterface reports it
+// (move_group_interface.cpp l. 899-900 plan, 854-855 move, 764-765 pick): plan() at INFO "ABORTED: <text>",
+// move() and pick() at WARN "Fail: ABORTED: <text>"
+TEST_F(MoveGroupInterfaceTest, ReportsAnAbortedGoalAsMoveIt)
+{
+  LogRecorder recorder;
+  ros::console::register_appender(&recorder);
+  group_->setStartStateToCurrentState();
+  ASSERT_TRUE(group_->setPositionTarget(OUT_OF_REACH_X, 0.0, 0.0));
+  MoveGroupInterface::Plan plan;
+  EXPECT_NE(group_->plan(plan), Codes::SUCCESS);
+  const auto planned = recorder.take();
+  EXPECT_EQ(levelsOf(planned, "ABORTED: "), std::vector<ros::console::Level>{ ros::console::levels::Info });
+  EXPECT_TRUE(levelsOf(planned, "Fail: ").empty());
+
+  EXPECT_NE(group_->move(), Codes::SUCCESS);
+  EXPECT_EQ(levelsOf(recorder.take(), "Fail: ABORTED: "), std::vector<ros::console::Level>{ ros::console::levels::Warn });
+
+  EXPECT_NE(group_->pick("no_such_object"), Codes::SUCCESS);
+  EXPECT_EQ(levelsOf(recorder.take(), "Fail: ABORTED: "), std::vector<ros::console::Level>{ ros::console::levels::Warn });
+  ros::console::deregister_appender(&recorder);
+  group_->clearPoseTargets();
 }
 
 int main(int argc, char** argv)
