@@ -262,7 +262,12 @@ moveit::core::SolverAllocatorFn KinematicsPluginLoader::getLoaderFunction(const 
     std::map<std::string, std::vector<std::string>> solvers;
     std::map<std::string, std::vector<double>> search_res;
     std::map<std::string, std::vector<std::string>> tip_links;
-    if (srdf_model)
+    // the parameters and the plugins' own lookupParam need roscpp; upstream would abort in ros::NodeHandle
+    const bool have_ros = ros::isInitialized();
+    if (srdf_model && !have_ros)
+      ROS_ERROR_NAMED(LOGNAME, "No kinematics plugins loaded: reading robot_description_kinematics needs roscpp "
+                               "(call ros::init first)");
+    if (srdf_model && have_ros)
     {
       // no resolution given: KinematicsBase's default (l. 287-288)
       if (default_search_resolution_ <= std::numeric_limits<double>::epsilon())
