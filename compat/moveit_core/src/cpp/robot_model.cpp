@@ -540,7 +540,13 @@ const LinkModel* RobotModel::getRigidlyConnectedParentLinkModel(const LinkModel*
     return link;
   const LinkModel* parent = link->getParentLinkModel();
   const JointModel* joint = link->getParentJointModel();
-  while (parent && joint->getType() == JointModel::FIXED && !(jmg && jmg->hasJointModel(joint->getName())))
+  // up across fixed joints and, given a group with joints, across joints the group does not move (l. 1280-1315 on
+  // noetic-devel): the link that moves a tool fixed to it
+  auto rigid = [jmg](const JointModel* j) {
+    return j->getType() == JointModel::FIXED ||
+           (jmg && !jmg->getJointModels().empty() && !jmg->hasJointModel(j->getName()));
+  };
+  while (parent && rigid(joint))
   {
     transform = link->getJointOriginTransform() * transform;
     link = parent;

@@ -644,18 +644,9 @@ const LinkModel* RobotState::getRigidlyConnectedParentLinkModel(const std::strin
   const LinkModel* link = robot_model_->getLinkModel(frame, &has_link);
   if (!has_link)
     return nullptr;
-  // Up across fixed joints and, given a group, across joints the group does not move (robot_model.cpp
-  // getRigidlyConnectedParentLinkModel, l. 1280-1315 on noetic-devel): the link that moves a tool fixed to it
-  Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-  auto rigid = [jmg](const JointModel* joint) {
-    return joint->getType() == JointModel::FIXED || (jmg && !jmg->getJointModels().empty() &&
-                                                     !jmg->hasJointModel(joint->getName()));
-  };
-  while (link->getParentLinkModel() && rigid(link->getParentJointModel()))
-  {
-    t = link->getJointOriginTransform() * t;
-    link = link->getParentLinkModel();
-  }
+  // the model's walk up across rigid joints (robot_state.cpp delegates to it likewise on noetic-devel)
+  Eigen::Isometry3d t;
+  link = RobotModel::getRigidlyConnectedParentLinkModel(link, t, jmg);
   if (transform)
     *transform = t;
   return link;

@@ -189,6 +189,27 @@ TEST(RobotModel, SixAxisArmGroupsAgainstSrdfAndUrdf)
   EXPECT_DOUBLE_EQ(state.getVariablePosition("wrist_1_joint"), 0.3);
 }
 
+// The link that moves a frame: up across fixed joints, and given a group with joints, across the joints the group does
+// not move (robot_model.cpp l. 1280-1315 on noetic-devel). The chain group "manipulator" holds tool0's fixed joint:
+// tool0 still goes up to wrist_3_link; the group "wrist" moves none of forearm_link's parent joints: up to the root.
+TEST(RobotModel, RigidlyConnectedParentLinks)
+{
+  moveit::core::RobotModelPtr model = load("six_axis_arm", nullptr);
+  ASSERT_TRUE(model);
+  const moveit::core::LinkModel* tool = model->getLinkModel("tool0");
+  Eigen::Isometry3d to_parent;
+  const moveit::core::LinkModel* parent = moveit::core::RobotModel::getRigidlyConnectedParentLinkModel(
+      tool, to_parent, model->getJointModelGroup("manipulator"));
+  ASSERT_TRUE(parent);
+  EXPECT_EQ(parent->getName(), "wrist_3_link");
+  EXPECT_TRUE(to_parent.isApprox(tool->getJointOriginTransform()));
+  EXPECT_EQ(moveit::core::RobotModel::getRigidlyConnectedParentLinkModel(tool, to_parent)->getName(), "wrist_3_link");
+  const moveit::core::LinkModel* above = moveit::core::RobotModel::getRigidlyConnectedParentLinkModel(
+      model->getLinkModel("forearm_link"), to_parent, model->getJointModelGroup("wrist"));
+  ASSERT_TRUE(above);
+  EXPECT_EQ(above->getName(), model->getRootLinkName());
+}
+
 TEST(RobotModel, Px100GroupsAndEndEffector)
 {
   urdf::ModelInterfaceSharedPtr urdf;

@@ -6,8 +6,8 @@
 // (names, count, indices, bounds, default and random positions), joint model groups from the SRDF (joints, links,
 // chains, subgroups; group states), end effectors, rigidly connected links, printModelInfo, the legacy namespaces
 // robot_model:: and robot_state:: (aliases of moveit::core::).
-// Not provided: collision geometry (geometric_shapes is not packaged by Debian); kinematics plugin loading
-// (setKinematicsAllocators is provided for who allocates solvers; nothing calls it yet).
+// Not provided: collision geometry (geometric_shapes is not packaged by Debian). Kinematics plugins are loaded by
+// moveit_ros_planning's RobotModelLoader (through setKinematicsAllocators), as MoveIt's.
 #pragma once
 
 #include <iostream>
