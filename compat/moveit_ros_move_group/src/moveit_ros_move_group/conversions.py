@@ -2,6 +2,7 @@
 (tf.transformations), robot states as positions by joint. No master needed."""
 from __future__ import annotations
 
+import logging
 from typing import Dict, Iterable, Mapping
 
 import numpy as np
@@ -11,6 +12,8 @@ from sensor_msgs.msg import JointState
 from tf.transformations import quaternion_matrix
 
 from moveit_core.planning_scene import matrix_pose  # noqa: F401  (one Pose builder)
+
+LOG = logging.getLogger("rosout.move_group")
 
 
 class MessageError(ValueError):
@@ -34,11 +37,18 @@ def pose_matrix(pose: Pose, what: str = "pose") -> np.ndarray:
 
 def state_positions(state: RobotState, current: Mapping[str, float]) -> Dict[str, float]:
     """The positions a RobotState message gives, over ``current`` (MoveIt applies a message
-    to the current state: the joints it names replace theirs)."""
+    to the current state: the joints it names replace theirs). A joint state whose names and
+    positions differ in number changes nothing, with MoveIt's error (conversions.cpp l. 57-61
+    on noetic-devel), and the request goes on from ``current``: compute_ik, compute_fk,
+    compute_cartesian_path and check_state_validity ignore the conversion's failure there
+    (kinematics_service_capability.cpp l. 80, 201, cartesian_path_service_capability.cpp
+    l. 86, state_validation_service_capability.cpp l. 60). A non-finite position is refused
+    (MessageError): MoveIt would plan from it."""
     names, positions = state.joint_state.name, state.joint_state.position
     if len(names) != len(positions):
-        raise MessageError(f"robot_state.joint_state has {len(names)} names and "
-                           f"{len(positions)} positions")
+        LOG.error("Different number of names and positions in JointState message: %d, %d",
+                  len(names), len(positions))
+        return dict(current)
     merged = dict(current)
     for name, value in zip(names, positions):
         if not np.isfinite(value):

@@ -270,3 +270,29 @@ def test_a_path_stops_where_it_would_leave_its_path_constraints():
     for point in answer.solution.joint_trajectory.points:
         tool = fk(context, solver.tip, dict(state, **dict(zip(solver.joints, point.positions))))
         assert tool[2, 3] - start[2, 3] <= BOX_ABOVE + 1e-9
+
+
+def test_a_seed_whose_names_and_positions_differ_in_number_is_left_aside(caplog):
+    """MoveIt's compute_ik ignores robotStateMsgToRobotState's failure
+    (kinematics_service_capability.cpp l. 80): a seed of 6 names and 5 positions changes
+    nothing, with conversions.cpp's error, and the pose is solved from the current state (the
+    tutorial ros_api_tutorial's request: 8 names, 7 positions)."""
+    values, group = six_axis_arm()
+    context = from_parameters(lambda name: values[name])
+    solver = context.solver(group)
+    state = dict(context.model.default_positions(),
+                 **dict(zip(solver.joints, [0.0, 0.4, 0.8, 0.3, 0.5, 0.0])))
+    request = GetPositionIKRequest()
+    request.ik_request.group_name = group
+    request.ik_request.timeout = rospy.Duration(IK_TIMEOUT)
+    request.ik_request.pose_stamped.header.frame_id = context.model.model_frame
+    request.ik_request.pose_stamped.pose = matrix_pose(fk(context, solver.tip, state))
+    request.ik_request.robot_state.joint_state.name = list(solver.joints)
+    request.ik_request.robot_state.joint_state.position = [0.1] * (len(solver.joints) - 1)
+    with caplog.at_level("ERROR", logger="rosout.move_group"):
+        answer = kinematics_service.compute_ik(context, request, Scene(context.model))
+    assert "Different number of names and positions in JointState message: 6, 5" in caplog.text
+    assert answer.error_code.val == MoveItErrorCodes.SUCCESS
+    solution = dict(zip(answer.solution.joint_state.name, answer.solution.joint_state.position))
+    reached, wanted = fk(context, solver.tip, solution), fk(context, solver.tip, state)
+    assert np.linalg.norm(reached[:3, 3] - wanted[:3, 3]) < POSITION_TOLERANCE
