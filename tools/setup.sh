@@ -63,6 +63,7 @@ apt_packages=(
   python3-pycodestyle libtinyxml-dev libtinyxml2-dev libgtest-dev googletest librandom-numbers-dev
   libeigen-stl-containers-dev
   pluginlib-dev libclass-loader-dev libtf2-kdl-dev libtf2-eigen-dev libtf-conversions-dev
+  liblapack-dev
 )
 missing=()
 for pkg in "${apt_packages[@]}"; do
@@ -81,6 +82,17 @@ else
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
     "${missing[@]}" >/dev/null
   echo "setup: Debian packages: done"
+fi
+
+# Debian's pluginlib-dev is ROS 2's pluginlib (5.2.1, found by ROS 1 packages' exports through
+# rospack): it lacks Noetic's <pluginlib/*.h> headers, which ROS 1 plugins (IKFast plugins,
+# rviz and controller plugins) include. They go where the compiler looks by itself.
+ros1_headers=/usr/local/include/pluginlib
+if ! diff -rq "$repo/tools/ros1_headers/pluginlib" "$ros1_headers" >/dev/null 2>&1; then
+  sudo_cmd=()
+  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" install -D -m 644 -t "$ros1_headers" "$repo"/tools/ros1_headers/pluginlib/*.h
+  echo "setup: pluginlib's ROS 1 headers: installed in $ros1_headers"
 fi
 
 # --- 3. the virtual environment -------------------------------------------------------

@@ -1,0 +1,7 @@
+// <pluginlib/class_desc.h> as Noetic's pluginlib 1.13 has it (noetic-devel pluginlib/include/pluginlib/class_desc.h):
+// <pluginlib/class_desc.hpp> under its ROS 1 name, which ROS 1 packages still include. Debian's pluginlib-dev
+// (5.2.1) has only the .hpp; tools/setup.sh installs this into /usr/local/include/pluginlib/.
+#ifndef PLUGINLIB_ROS1_CLASS_DESC_H
+#define PLUGINLIB_ROS1_CLASS_DESC_H
+#include <pluginlib/class_desc.hpp>
+#endif  // PLUGINLIB_ROS1_CLASS_DESC_H

@@ -1,0 +1,7 @@
+// <pluginlib/pluginlib_exceptions.h> as Noetic's pluginlib 1.13 has it (noetic-devel pluginlib/include/pluginlib/pluginlib_exceptions.h):
+// <pluginlib/exceptions.hpp> under its ROS 1 name, which ROS 1 packages still include. Debian's pluginlib-dev
+// (5.2.1) has only the .hpp; tools/setup.sh installs this into /usr/local/include/pluginlib/.
+#ifndef PLUGINLIB_ROS1_PLUGINLIB_EXCEPTIONS_H
+#define PLUGINLIB_ROS1_PLUGINLIB_EXCEPTIONS_H
+#include <pluginlib/exceptions.hpp>
+#endif  // PLUGINLIB_ROS1_PLUGINLIB_EXCEPTIONS_H
