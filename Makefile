@@ -8,7 +8,8 @@
 #   make fuzz-long set up, then the fuzz tier with many more random cases (FUZZ_LONG=1)
 #   make soak     set up, then the long and timing-bound runs beside make test: the flip
 #                 routine through ROS at four headings at real time (make test runs it at 2x),
-#                 the grader's fault fixtures one at a time (make test grades them in batches),
+#                 arm_move's pick and place in the simulation three times in a row (make
+#                 test: once), the grader's fault fixtures one at a time (make test grades them in batches),
 #                 a class of twelve RB1 submissions graded two at a time with --summary,
 #                 the simulator started and stopped 50 times (make test: 12, each state 3 times)
 #   make bench    set up, then measure sim_bridge's speed and memory (prints a table)
@@ -38,6 +39,7 @@ fuzz-long: setup
 
 soak: setup
 	@$(RUN) flock /tmp/sim.lock rostest diff_drive flip_headings.test real_time_factor:=1
+	@$(RUN) flock /tmp/sim.lock rostest arm_move pick_place_sim.test runs:=3
 	@$(RUN) flock /tmp/sim.lock python3 -m pytest -v -p no:cacheprovider test/soak
 
 bench: setup
