@@ -26,6 +26,7 @@ import json
 import os
 import subprocess
 import sys
+import threading
 import time
 from typing import Dict, List
 
@@ -129,11 +130,16 @@ def _clients(env: Dict[str, str], log_path: str) -> Dict[str, float]:
     from sensor_msgs.msg import JointState
     heard = rospy.wait_for_message("/px100/joint_states", JointState, timeout=START_LIMIT)
     publisher = rospy.Publisher("/px100/joint_states", JointState, queue_size=1)
+    stop = threading.Event()
 
-    def publish(_):
-        heard.header.stamp = rospy.Time.now()
-        publisher.publish(heard)
-    timer = rospy.Timer(rospy.Duration(1.0 / CLIENT_STATE_RATE), publish)
+    def publish():
+        # stamped by the wall clock, which the launch's nodes follow (see measure), whatever
+        # clock this process's rospy follows
+        while not stop.wait(1.0 / CLIENT_STATE_RATE):
+            heard.header.stamp = rospy.Time.from_sec(time.time())
+            publisher.publish(heard)
+    publishing = threading.Thread(target=publish, daemon=True)
+    publishing.start()
     client_env = dict(env, ROS_NAMESPACE="px100")
     for node in ("plan_timing_cpp", "plan_timing_py"):
         rospy.set_param(f"/px100/{node}/group", "interbotix_arm")
@@ -148,7 +154,8 @@ def _clients(env: Dict[str, str], log_path: str) -> Dict[str, float]:
                 for client, command in commands.items():
                     beyond[client] += _client_run(command, client_env, log)
     finally:
-        timer.shutdown()
+        stop.set()
+        publishing.join(timeout=1.0)
         publisher.unregister()
     cpp, py = float(np.median(beyond["cpp"])), float(np.median(beyond["py"]))
     return {"cpp_beyond_planning": cpp, "py_beyond_planning": py, "cpp_added": cpp - py}
@@ -165,6 +172,9 @@ def measure(env: Dict[str, str], log_path: str) -> Dict[str, float]:
     if not rospy.core.is_initialized():     # make bench's probe node serves, when it runs
         os.environ.update(ROS_MASTER_URI=env["ROS_MASTER_URI"])
         rospy.init_node("bench_moveit", anonymous=True, disable_signals=True)
+    # the fake arm runs on the wall clock: make bench's simulator runs before this left
+    # /use_sim_time set on the master, and without /clock the driver's timers would not fire
+    rospy.set_param("/use_sim_time", False)
     started = time.monotonic()
     with headless.roslaunch(["interbotix_xsarm_moveit", "xsarm_moveit.launch",
                              "robot_model:=px100", "dof:=4", "use_fake:=true",
