@@ -81,6 +81,20 @@ def test_a_range_sensor_measures_only_while_heard_and_keeps_its_slots(world, bus
     assert measured[0] - UNHEARD_SECONDS * 1e9 <= 50_000_000
 
 
+def silent_then_heard_at_50_hz(world, bus, topic):
+    """``topic`` unheard for UNHEARD_SECONDS: nothing published; then heard for
+    HEARD_SECONDS: a message each 20 ms slot. The stamps heard."""
+    bus.unheard.add(topic)
+    run(world, UNHEARD_SECONDS)
+    assert topic not in bus.published
+    bus.unheard.discard(topic)
+    run(world, HEARD_SECONDS)
+    stamps = [message.header.stamp.to_nsec() for message in bus.published[topic]]
+    assert len(stamps) >= 10
+    assert all(later - earlier == 20_000_000 for earlier, later in zip(stamps, stamps[1:]))
+    return stamps
+
+
 def test_p3d_computes_only_while_heard_and_keeps_its_slots(world, bus):
     """gazebo_ros_p3d fills and publishes only while subscribed
     (gazebo_plugins/src/gazebo_ros_p3d.cpp:243): the gadget robot's 50 Hz ground truth of
@@ -93,15 +107,7 @@ def test_p3d_computes_only_while_heard_and_keeps_its_slots(world, bus):
     with open(os.path.join(DATA, "gadget_bot.urdf"), encoding="utf-8") as stream:
         world.spawn_urdf("bot", stream.read(), (0, 0, 0.05))
     truth = next(p for p in world.models["bot"].plugins if isinstance(p, P3D))
-    topic = truth.output.topic
-    bus.unheard.add(topic)
-    run(world, UNHEARD_SECONDS)
-    assert topic not in bus.published
-    bus.unheard.discard(topic)
-    run(world, HEARD_SECONDS)
-    stamps = [message.header.stamp.to_nsec() for message in bus.published[topic]]
-    assert len(stamps) >= 10
-    assert all(later - earlier == 20_000_000 for earlier, later in zip(stamps, stamps[1:]))
+    stamps = silent_then_heard_at_50_hz(world, bus, truth.output.topic)
     assert stamps[0] - UNHEARD_SECONDS * 1e9 <= 20_000_000
 
 
@@ -113,12 +119,4 @@ def test_a_bumper_reports_only_while_heard(world, bus):
     from test_bumper import robot
     world.spawn_urdf("bot", robot(), (0, 0, 0.11))
     plate = next(p for p in world.models["bot"].plugins if isinstance(p, Bumper))
-    topic = plate.output.topic
-    bus.unheard.add(topic)
-    run(world, UNHEARD_SECONDS)
-    assert topic not in bus.published
-    bus.unheard.discard(topic)
-    run(world, HEARD_SECONDS)
-    stamps = [message.header.stamp.to_nsec() for message in bus.published[topic]]
-    assert len(stamps) >= 10
-    assert all(later - earlier == 20_000_000 for earlier, later in zip(stamps, stamps[1:]))
+    silent_then_heard_at_50_hz(world, bus, plate.output.topic)
