@@ -200,9 +200,7 @@ class KdlSolver:
             elif give_up_stalled and len(errors) > STALL_STEPS and \
                     errors[-1] > STALL_SHRINK * errors[-1 - STALL_STEPS]:
                 return None
-            self._jacobian_solver.JntToJac(array, self._jacobian)
-            jacobian = np.array([[self._jacobian[r, c] for c in range(len(self.joints))]
-                                 for r in range(6)]) * weights[:, None]
+            jacobian = self._jacobian_at(array) * weights[:, None]
             step = jacobian.T @ np.linalg.solve(jacobian @ jacobian.T + damping, weighted)
             # a joint at a bound that the step pushes further out stays there: the step is
             # solved again by the other joints (else the clip below throws its share away and
@@ -216,6 +214,12 @@ class KdlSolver:
                 step *= MAX_STEP / largest
             q = np.clip(q + step, self.lower, self.upper)
         return None
+
+    def _jacobian_at(self, array: kdl.JntArray) -> np.ndarray:
+        """The chain's 6 x n Jacobian at ``array`` (KDL's, in the base frame)."""
+        self._jacobian_solver.JntToJac(array, self._jacobian)
+        return np.array([[self._jacobian[r, c] for c in range(len(self.joints))]
+                         for r in range(6)])
 
     @staticmethod
     def _range(bounds) -> tuple:

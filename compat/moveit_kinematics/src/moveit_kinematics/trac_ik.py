@@ -163,11 +163,8 @@ class TracIkSolver(KdlSolver):
 
     def manipulability(self, solution: Sequence[float]) -> float:
         """penalty * measure of the solve type (manipPenalty, manipValue1 / manipValue2)."""
-        array = self._array(list(solution))
-        self._jacobian_solver.JntToJac(array, self._jacobian)
-        jacobian = np.array([[self._jacobian[r, c] for c in range(len(self.joints))]
-                             for r in range(6)])
-        singular = np.linalg.svd(jacobian, compute_uv=False)
+        singular = np.linalg.svd(self._jacobian_at(self._array(list(solution))),
+                                 compute_uv=False)
         measure = float(np.prod(singular)) if self.solve_type == MANIPULATION1 else \
             float(singular.min() / singular.max())
         return self.limits_penalty(solution) * measure
