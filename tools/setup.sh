@@ -65,6 +65,9 @@ apt_packages=(
   pluginlib-dev libclass-loader-dev libtf2-kdl-dev libtf2-eigen-dev libtf-conversions-dev
   liblapack-dev
 )
+# apt and the headers below write where only root may
+as_root=()
+[ "$(id -u)" -eq 0 ] || as_root=(sudo)
 missing=()
 for pkg in "${apt_packages[@]}"; do
   dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || missing+=("$pkg")
@@ -73,13 +76,11 @@ if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: Debian packages: all ${#apt_packages[@]} present"
 else
   echo "setup: Debian packages: installing ${#missing[@]}: ${missing[*]}"
-  sudo_cmd=()
-  if [ "$(id -u)" -ne 0 ]; then
-    command -v sudo >/dev/null || { echo "setup: need root or sudo to install Debian packages" >&2; exit 1; }
-    sudo_cmd=(sudo)
+  if [ ${#as_root[@]} -gt 0 ] && ! command -v sudo >/dev/null; then
+    echo "setup: need root or sudo to install Debian packages" >&2; exit 1
   fi
-  "${sudo_cmd[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
+  "${as_root[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${as_root[@]}" apt-get install -y -qq --no-install-recommends \
     "${missing[@]}" >/dev/null
   echo "setup: Debian packages: done"
 fi
@@ -89,9 +90,7 @@ fi
 # rviz and controller plugins) include. They go where the compiler looks by itself.
 ros1_headers=/usr/local/include/pluginlib
 if ! diff -rq "$repo/tools/ros1_headers/pluginlib" "$ros1_headers" >/dev/null 2>&1; then
-  sudo_cmd=()
-  [ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
-  "${sudo_cmd[@]}" install -D -m 644 -t "$ros1_headers" "$repo"/tools/ros1_headers/pluginlib/*.h
+  "${as_root[@]}" install -D -m 644 -t "$ros1_headers" "$repo"/tools/ros1_headers/pluginlib/*.h
   echo "setup: pluginlib's ROS 1 headers: installed in $ros1_headers"
 fi
 
