@@ -12,6 +12,7 @@ import os
 import re
 import subprocess
 import sys
+import time
 
 import pytest
 
@@ -22,6 +23,7 @@ from course_grader.results import Report
 STOP = 2.0        # s: SIGINT to SIGKILL in these tests
 STARTUP = 10.0    # s: a stand-in process to start; the probe's wait, beyond SCENARIO
 SCENARIO = 3.0    # s: the scenario's limit, where the waiting probe is stopped
+GONE_WITHIN = 5.0  # s: a killed process to be gone
 # a node that ignores SIGINT and SIGTERM and says it is running; argv long, as a node's is
 DEAF_NODE = ("import signal, sys, time\n"
              "signal.signal(signal.SIGINT, signal.SIG_IGN)\n"
@@ -52,12 +54,20 @@ def _limits():
     return {"stop": STOP, "startup": STARTUP, "scenario": SCENARIO}
 
 
-def _gone(pid):
-    try:
-        with open(f"/proc/{pid}/stat", encoding="utf-8") as stream:
-            return stream.read().rsplit(")", 1)[1].split()[0] == "Z"
-    except FileNotFoundError:
-        return True
+def _gone(pid, timeout=GONE_WITHIN):
+    """Whether ``pid`` has ended (or is a zombie) within ``timeout``: a process sent SIGKILL
+    takes a moment to go, longer on a loaded machine (once seen still running at once)."""
+    deadline = time.monotonic() + timeout
+    while True:
+        try:
+            with open(f"/proc/{pid}/stat", encoding="utf-8") as stream:
+                if stream.read().rsplit(")", 1)[1].split()[0] == "Z":
+                    return True
+        except FileNotFoundError:
+            return True
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(0.01)
 
 
 def test_a_tagged_process_deaf_to_sigterm_is_killed_and_recorded(tmp_path):
