@@ -20,7 +20,10 @@ import os
 import subprocess
 import threading
 import unittest
+import xmlrpc.client
 
+import rosgraph
+import rosnode
 import rospkg
 import rospy
 import rostest
@@ -99,6 +102,29 @@ def wait_for_connection(endpoint):
     assert endpoint.get_num_connections(), f"{endpoint.name}: speed_pid_node never connected"
 
 
+def wait_until_received(node, topic, count):
+    """Until ``node`` has received ``count`` messages on ``topic``, by the node's own bus
+    statistics (roscpp's getBusStats: per subscription, per connection, the messages
+    received). The node spins one queue, so a message received before another is handled
+    before it: the latched target before the first measured speed (two topics are two
+    connections, and nothing else orders them)."""
+    api = rosnode.get_api_uri(rosgraph.Master(rospy.get_name()), node, skip_cache=True)
+    server = xmlrpc.client.ServerProxy(api)
+    deadline = rospy.Time.now() + rospy.Duration(TIMEOUT)
+    received = 0
+    while rospy.Time.now() < deadline:
+        # roscpp answers [publications, subscriptions] itself, without rospy's code and
+        # message around it
+        subscriptions = server.getBusStats(rospy.get_name())[1]
+        received = sum(connection[2] for name, connections in subscriptions
+                       if name == topic for connection in connections)
+        if received >= count:
+            return
+        rospy.rostime.wallsleep(CONNECTION_POLL)
+    raise AssertionError(f"{node} received {received} of {count} messages on {topic} "
+                         f"within {TIMEOUT} s")
+
+
 def dynparam(*arguments):
     run = subprocess.run(["rosrun", "dynamic_reconfigure", "dynparam", *arguments],
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
@@ -118,6 +144,7 @@ class RobotPackageDeps(unittest.TestCase):
         for endpoint in (cls.commands.subscriber, cls.states.subscriber, cls.target, cls.measured):
             wait_for_connection(endpoint)
         cls.target.publish(Float64(TARGET))
+        wait_until_received(NODE, "/target_speed", 1)
         cls.reference = ReferencePid(**GAINS)
         cls.steps = 0
 
