@@ -114,6 +114,11 @@ PAUSED_CLOCK_PERIOD = 0.1
 # sleeps until its time comes: every wake-up costs (at 2 ms, 500 a second, the paced
 # simulator used twice the CPU its steps did); simulated time runs at most this far ahead.
 PACE_BATCH = 0.01
+# At most this many steps between two looks of the loop at its queue of service calls, at
+# rospy's shutdown and at the clock (World.advance makes the steps no plugin needs by the
+# physics alone): at full speed on a 1 ms step about 1 ms of wall time, so a call waits no
+# longer than that for the physics.
+MAX_BATCH_STEPS = 20
 
 
 @dataclass
@@ -812,6 +817,26 @@ class SimBridgeNode:
         elif ahead < -0.5:  # far behind (a slow spell): do not race to catch up
             self._pace_anchor = None
 
+    def _batch_steps(self, step_ns: int) -> int:
+        """How many steps the world may make before the loop looks again (World.advance):
+        up to MAX_BATCH_STEPS, ending where /clock at its own rate is due, and where
+        model_states or link_states are while someone listens to them (unheard, their
+        times only move on), and paced, no more than PACE_BATCH of wall time's worth."""
+        now_ns = self.world.now_ns
+        steps = MAX_BATCH_STEPS
+        factor = self.world.real_time_factor
+        if factor > 0:
+            steps = min(steps, max(1, int(PACE_BATCH * factor * 1e9) // step_ns))
+        if self.clock_period_ns > step_ns:
+            steps = min(steps, max(1, -(-(self._next_clock_ns - now_ns) // step_ns)))
+        if self._states_listened():
+            steps = min(steps, max(1, -(-(self._next_states_ns - now_ns) // step_ns)))
+        return steps
+
+    def _states_listened(self) -> bool:
+        return bool(self.model_states and has_connections(self.model_states) or
+                    self.link_states and has_connections(self.link_states))
+
     def run(self, stop: StopSignals) -> None:
         """Steps and publishes until rospy shuts down or ``stop`` is requested."""
         self._publish_clock()
@@ -833,9 +858,12 @@ class SimBridgeNode:
                 self.clock.flush()
                 time.sleep(0.002)
                 continue
-            world.step()
+            step_ns = world.step_ns
+            made = world.advance(self._batch_steps(step_ns))
             now_ns = world.now_ns
-            if now_ns >= self._next_clock_ns:
+            if self.clock_period_ns <= step_ns:  # every step (Gazebo's default): each one's
+                self.clock.publish_steps(now_ns - (made - 1) * step_ns, step_ns, made)
+            elif now_ns >= self._next_clock_ns:  # a batch ends at the clock's next time
                 self._publish_clock()
                 self._next_clock_ns = now_ns + self.clock_period_ns
             if now_ns >= self._next_states_ns:

@@ -227,18 +227,47 @@ class ClockPublisher:
     def publish(self, now_ns: int) -> None:
         """This step's time: rospy's at once, the message written with the others of the
         batch, or at once when the next step would end past the batch's ``coalesce``."""
-        secs, nsecs = divmod(now_ns, NS_PER_S)
+        self.publish_steps(now_ns, 1, 1)
+
+    def publish_steps(self, first_ns: int, step_ns: int, count: int) -> None:
+        """The times of ``count`` steps made together (``World.advance``), ``step_ns``
+        apart from ``first_ns``: a message each, in order, written as ``count`` calls of
+        :meth:`publish` at this wall time would write them (the first by its own step's
+        wall length, the others a step of no wall time after it); rospy's time is the
+        last."""
+        last_ns = first_ns + (count - 1) * step_ns
+        secs, nsecs = divmod(last_ns, NS_PER_S)
         self.own_clock.set(ros_time(secs, nsecs))
         wall = self.wall()
-        # a step's wall length; unknown for the first, which is written at once
+        # the wall time since the last publish; unknown for the first, written at once
         step = math.inf if self._last is None else wall - self._last
         self._last = wall
         if not has_connections(self.publisher):
             self._pending.clear()
             return
+        pack, pending = CLOCK_WIRE.pack, self._pending
+        if count == 1:
+            self._add(pack(8, secs, nsecs), wall, step)
+            return
+        # the times counted on from the first (one division, not one a message)
+        secs, nsecs = divmod(first_ns, NS_PER_S)
+        self._add(pack(8, secs, nsecs), wall, step)
+        if not pending:  # the first went out: the others start a batch now
+            self._first = wall
+        for _ in range(count - 1):
+            nsecs += step_ns
+            if nsecs >= NS_PER_S:
+                secs, nsecs = secs + nsecs // NS_PER_S, nsecs % NS_PER_S
+            pending.append(pack(8, secs, nsecs))
+        if wall - self._first >= self.coalesce:
+            self.flush()
+
+    def _add(self, message: bytes, wall: float, step: float) -> None:
+        """One packed message pending; all pending written when the next step, as long as
+        this one, would end past the batch's ``coalesce``."""
         if not self._pending:
             self._first = wall
-        self._pending.append(CLOCK_WIRE.pack(8, secs, nsecs))
+        self._pending.append(message)
         if wall + step - self._first >= self.coalesce:
             self.flush()
 

@@ -7,6 +7,8 @@ import struct
 import threading
 import time
 
+import pytest
+
 from sim_bridge.ros_publishing import BatchedConnection
 
 QUEUE_SIZE = 3
@@ -253,6 +255,62 @@ def test_fast_steps_clocks_go_out_together_every_one_in_order(monkeypatch):
         assert written + clock_times(reader, 0.3)[0] == steps
     finally:
         transport.close()
+
+
+@pytest.mark.parametrize("step_ns", [1_000_000, 4_166_667, 333_333_334])
+def test_steps_made_together_each_get_their_clock_in_order(monkeypatch, step_ns):
+    """World.advance's batches: publish_steps writes each step's time, as one publish a
+    step would, across whole seconds too (at 1 ms, pybullet's 1/240 s, a 3 Hz step);
+    rospy's time is the last one's."""
+    wall = FakeWall()
+    publisher, transport, reader = clock_publisher(monkeypatch, wall)
+    first = 999 * step_ns + 7
+    times = [first + k * step_ns for k in range(40)]
+    rospy_times = []
+    publisher.own_clock.set = rospy_times.append
+    try:
+        for start, count in ((0, 1), (1, 6), (7, 20), (27, 13)):
+            wall.now += 40e-6 * count
+            publisher.publish_steps(times[start], step_ns, count)
+            assert rospy_times[-1].to_nsec() == times[start + count - 1]
+        publisher.flush()
+        assert clock_times(reader, 0.3)[0] == times
+    finally:
+        transport.close()
+
+
+@pytest.mark.parametrize("batch_wall", [0.0004, 0.01], ids=["full_speed", "paced"])
+def test_steps_made_together_are_written_as_one_publish_a_step_writes_them(monkeypatch,
+                                                                          batch_wall):
+    """The same writes, message for message, as a publish per step at the batch's wall
+    time, whether the wall moves 10 ms between batches (paced: a batch's first message
+    goes out with what was pending) or 0.4 ms (full speed: batches together up to
+    COALESCE)."""
+    writes = {}
+    for way in ("steps", "one_by_one"):
+        wall = FakeWall()
+        publisher, transport, reader = clock_publisher(monkeypatch, wall)
+        flush = publisher.flush
+        written = writes[way] = []
+
+        def recorded(flush=flush, publisher=publisher, written=written):
+            written.append(len(publisher._pending))
+            flush()
+        publisher.flush = recorded
+        try:
+            for batch in range(12):
+                wall.now += batch_wall
+                first = batch * 10 * 1_000_000
+                if way == "steps":
+                    publisher.publish_steps(first, 1_000_000, 10)
+                else:
+                    for step in range(10):
+                        publisher.publish(first + step * 1_000_000)
+            publisher.flush()
+        finally:
+            transport.close()
+    assert writes["steps"] == writes["one_by_one"]
+    assert sum(writes["steps"]) == 120
 
 
 def test_a_slow_step_writes_its_clock_at_once(monkeypatch):

@@ -19,6 +19,13 @@ from geometry_msgs.msg import Vector3, WrenchStamped
 from sim_bridge.gazebo_tags import PluginSpec
 from sim_bridge.poses import pose6_to_position_quaternion
 
+# a simulated time no step reaches (2^63 - 1 ns, about 292 years): "never", for
+# Plugin.quiet_until_ns
+NEVER = 2 ** 63 - 1
+# UpdateSlots: how many nanoseconds past its period it looks for where Gazebo's float
+# comparison turns (one or two at any period below a million years)
+BRANCH_SEARCH_NS = 1000
+
 
 class PluginError(ValueError):
     """A plugin that cannot run as written; the message names the plugin and the cause."""
@@ -298,6 +305,19 @@ class Plugin:
         return value if isinstance(value, str) else ""
 
     # --- the step ---------------------------------------------------------------------
+    def quiet_until_ns(self, now_ns: int) -> int:
+        """The earliest simulated time at which :meth:`before_step` or :meth:`after_step` may
+        do anything: called with any earlier time, both return at once, changing nothing
+        and calling nothing. The world makes the steps before it by the physics alone
+        (:meth:`World.advance <sim_bridge.world.World.advance>`), which is what calling the
+        plugin there would have done. A plugin that overrides either method may act at
+        every step unless it says otherwise (rate-gated plugins answer from their
+        :class:`Rate` or :class:`UpdateSlots`); one that overrides neither never acts."""
+        cls = type(self)
+        if cls.before_step is Plugin.before_step and cls.after_step is Plugin.after_step:
+            return NEVER
+        return now_ns
+
     def before_step(self, now_ns: int) -> None:
         """Applies commands to the bodies before a physics step."""
 
@@ -358,6 +378,10 @@ class Rate:
         self.period_ns = int(round(1e9 / rate_hz)) if rate_hz > 0 else 0
         self.next_ns = 0
 
+    def quiet_until_ns(self) -> int:
+        """The first time :meth:`due` may say yes (and change anything): the next slot."""
+        return self.next_ns
+
     def due(self, now_ns: int) -> bool:
         if now_ns < self.next_ns:
             return False
@@ -412,18 +436,31 @@ class UpdateSlots:
         self.period = 1.0 / rate_hz if rate_hz > 0 else 0.0
         self.period_ns = int(round(self.period * 1e9))
         self.last_ns: Optional[int] = None
+        # the fewest nanoseconds since the last update whose common::Time::Double() is more
+        # than the period (Double() grows with the nanoseconds, so the branch runs exactly
+        # from there on): within a nanosecond or two of the period (the search is bounded
+        # for periods of thousands of years, where a nanosecond is below a double's step)
+        self.branch_ns = max(self.period_ns - 1, 0)
+        for _ in range(BRANCH_SEARCH_NS):
+            if gazebo_seconds(self.branch_ns) > self.period:
+                break
+            self.branch_ns += 1
+
+    def quiet_until_ns(self, now_ns: int) -> int:
+        """The first time :meth:`due` runs the branch (or, before its first call, changes
+        anything)."""
+        if self.last_ns is None:
+            return now_ns
+        return self.last_ns + self.branch_ns
 
     def due(self, now_ns: int) -> Optional[float]:
         """The seconds since the last update when the branch runs now, else None."""
         if self.last_ns is None:
             self.last_ns = now_ns
-        # most steps fall short of the period by whole nanoseconds: said without the
-        # float seconds (this runs every step; a nanosecond short is left to the float)
-        if now_ns - self.last_ns < self.period_ns - 1:
+        # Gazebo's float comparison, decided once for all in whole nanoseconds (branch_ns)
+        if now_ns - self.last_ns < self.branch_ns:
             return None
         seconds = gazebo_seconds(now_ns - self.last_ns)
-        if not seconds > self.period:
-            return None
         self.last_ns += self.period_ns
         return seconds
 

@@ -119,6 +119,9 @@ class Bumper(Plugin):
             (pb.getBodyInfo(body, physicsClientId=client)[0].decode() or "link")
         return f"{model}::{link_name}::{link_name}_collision"
 
+    def quiet_until_ns(self, now_ns: int) -> int:
+        return self.rate.quiet_until_ns()  # after_step asks the rate first
+
     def after_step(self, now_ns: int) -> None:
         # nothing for nobody, as Noetic's OnContact (gazebo_ros_pkgs noetic-devel f9e1a46,
         # gazebo_plugins/src/gazebo_ros_bumper.cpp:142-143)

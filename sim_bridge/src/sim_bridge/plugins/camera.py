@@ -273,6 +273,9 @@ class Camera(SensorPlugin):
     def reset(self, now_ns: int) -> None:
         self.rate.reset(now_ns)
 
+    def quiet_until_ns(self, now_ns: int) -> int:
+        return self.rate.quiet_until_ns()  # after_step asks the rate first
+
     def after_step(self, now_ns: int) -> None:
         if not self.rate.due(now_ns) or not self.active() or not self.throttle.ready(now_ns):
             return
@@ -467,6 +470,9 @@ class MultiCamera(Plugin):
     def reset(self, now_ns: int) -> None:
         for camera in self.cameras:
             camera.reset(now_ns)
+
+    def quiet_until_ns(self, now_ns: int) -> int:
+        return min(camera.quiet_until_ns(now_ns) for camera in self.cameras)
 
     def after_step(self, now_ns: int) -> None:
         for camera in self.cameras:

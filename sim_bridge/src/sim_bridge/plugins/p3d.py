@@ -61,6 +61,9 @@ class P3D(Plugin):
         angular = np.asarray(state[7])
         return np.asarray(state[6]) + np.cross(angular, frame - com), angular
 
+    def quiet_until_ns(self, now_ns: int) -> int:
+        return self.rate.quiet_until_ns()  # after_step asks the rate first
+
     def after_step(self, now_ns: int) -> None:
         # only while someone subscribes, as Noetic's (gazebo_plugins/src/gazebo_ros_p3d.cpp:243);
         # the slots keep their times meanwhile (upstream's last time stays, so its first

@@ -82,6 +82,9 @@ class Range(SensorPlugin):
                           self.range_max)
         return nearest
 
+    def quiet_until_ns(self, now_ns: int) -> int:
+        return self.rate.quiet_until_ns()  # after_step asks the rate first
+
     def after_step(self, now_ns: int) -> None:
         if not self.rate.due(now_ns) or not self.context.bus.listened(self.output):
             return

@@ -48,6 +48,10 @@ class SkidSteer(DriveBase):
         self._joints = [robot.joint_index[j] for j in self.left + self.right]
         self.applied = None
 
+    def quiet_until_ns(self, now_ns: int) -> int:
+        # the wheels' slots before the step, the odometry's rate after it
+        return min(self.slots.quiet_until_ns(now_ns), self.rate.quiet_until_ns())
+
     def before_step(self, now_ns: int) -> None:
         """Noetic's rate branch (gazebo_plugins/src/gazebo_ros_skid_steer_drive.cpp:350-383):
         the last command reaches the wheels at the update slots only."""
