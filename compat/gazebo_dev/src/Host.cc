@@ -336,6 +336,87 @@ std::string Host::LoadWorldPlugin(const std::string &_filename, const std::strin
   return "";
 }
 
+// gzserver's system plugins (gazebo-classic, Debian's gazebo 11.10.2 source: Server.cc
+// :282-290 takes each -s; gazebo_shared.cc:33-53 makes it, refusing another plugin type
+// with a gzerr; :55-96 calls every plugin's Load(argc, argv) before transport starts and
+// every Init() after; physics/World.cc:414 signals worldCreated once the world has loaded)
+std::string Host::LoadSystemPlugin(const std::string &_filename,
+                                   const std::vector<std::string> &_argv)
+{
+  gazebo::SystemPlugin::TPtr plugin;
+  std::string fullname, error;
+  void *symbol = OpenPluginLibrary(_filename, fullname, error);
+  if (!symbol)
+    return "failed to load plugin " + _filename + ": " + error;
+  try
+  {
+    typedef gazebo::SystemPlugin *(*Register)();
+    plugin.reset(reinterpret_cast<Register>(symbol)());
+  }
+  catch (...)
+  {
+    return "its constructor threw: " + Describe(std::current_exception());
+  }
+  if (!plugin)
+    return "RegisterPlugin returned no plugin";
+  if (plugin->GetType() != gazebo::SYSTEM_PLUGIN)
+    return "System is attempting to load a plugin, but detected an incorrect plugin type. "
+           "Plugin filename[" + _filename + "]";
+  {
+    std::lock_guard<std::recursive_mutex> lock(this->mutex);
+    if (this->systemArgv.empty())
+    {
+      this->systemArguments = _argv;
+      for (auto &argument : this->systemArguments)
+        this->systemArgv.push_back(&argument[0]);
+      this->systemArgv.push_back(nullptr);
+    }
+  }
+  try
+  {
+    plugin->Load(static_cast<int>(this->systemArgv.size()) - 1, this->systemArgv.data());
+  }
+  catch (...)
+  {
+    return "exception in the Load function of system plugin [" + _filename + "]: " +
+           Describe(std::current_exception()) + "; this plugin will not run";
+  }
+  std::lock_guard<std::recursive_mutex> lock(this->mutex);
+  this->systemPlugins.emplace_back(_filename, plugin);
+  return "";
+}
+
+std::vector<std::string> Host::InitSystemPlugins()
+{
+  std::vector<std::pair<std::string, gazebo::SystemPlugin::TPtr>> plugins, kept;
+  {
+    std::lock_guard<std::recursive_mutex> lock(this->mutex);
+    plugins = this->systemPlugins;
+  }
+  std::vector<std::string> errors;
+  for (const auto &entry : plugins)
+  {
+    try
+    {
+      entry.second->Init();
+      kept.push_back(entry);
+    }
+    catch (...)
+    {
+      errors.push_back("exception in the Init function of system plugin [" + entry.first +
+                       "]: " + Describe(std::current_exception()) + "; this plugin will not run");
+    }
+  }
+  std::lock_guard<std::recursive_mutex> lock(this->mutex);
+  this->systemPlugins.swap(kept);
+  return errors;
+}
+
+void Host::WorldCreated()
+{
+  gazebo::event::Events::worldCreated(this->World()->Name());
+}
+
 void Host::RemoveModel(const std::string &_name)
 {
   std::vector<gazebo::ModelPlugin::TPtr> dropped;
@@ -465,11 +546,13 @@ void Host::Close()
   std::vector<gazebo::WorldPlugin::TPtr> worldPlugins;
   std::vector<std::pair<std::string, gazebo::ModelPlugin::TPtr>> modelPlugins;
   std::vector<std::pair<std::string, gazebo::SensorPlugin::TPtr>> sensorPlugins;
+  std::vector<std::pair<std::string, gazebo::SystemPlugin::TPtr>> systemPlugins;
   {
     std::lock_guard<std::recursive_mutex> lock(this->mutex);
     worldPlugins.swap(this->worldPlugins);
     modelPlugins.swap(this->modelPlugins);
     sensorPlugins.swap(this->sensorPlugins);
+    systemPlugins.swap(this->systemPlugins);
     this->models.clear();
     this->world.reset();
     this->iterations = 0;
@@ -477,6 +560,7 @@ void Host::Close()
   sensorPlugins.clear();
   modelPlugins.clear();
   worldPlugins.clear();
+  systemPlugins.clear();
   gazebo::sensors::SensorManager::Instance()->Clear();
   std::lock_guard<std::recursive_mutex> lock(this->mutex);
   this->backend.reset();

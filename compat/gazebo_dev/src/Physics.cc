@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "gazebo/common/Console.hh"
+#include "gazebo/common/Exception.hh"
 #include "gazebo/physics/physics.hh"
 #include "gazebo_compat/Host.hh"
 
@@ -653,6 +654,36 @@ void World::InsertModelString(const std::string &)
 {
   gzerr << "World::InsertModelString is not provided by sim_bridge; spawn models with "
         << "gazebo_ros's spawn_model" << std::endl;
+}
+
+WorldPtr get_world(const std::string &_name)
+{
+  try
+  {
+    std::shared_ptr<gazebo_compat::Backend> world = backend();
+    if (_name.empty() || world->WorldName() == _name)
+      return gazebo_compat::Host::Instance().World();
+  }
+  catch (const std::runtime_error &)
+  {
+    if (_name.empty())
+      gzerr << "no worlds\n";
+  }
+  gzerr << "Unable to find world by name in physics::get_world[" << _name.c_str() << "]\n";
+  gzthrow("Unable to find world by name in physics::get_world(world_name)");
+}
+
+bool has_world(const std::string &_name)
+{
+  try
+  {
+    std::shared_ptr<gazebo_compat::Backend> world = backend();
+    return _name.empty() || world->WorldName() == _name;
+  }
+  catch (const std::runtime_error &)
+  {
+    return false;
+  }
 }
 }  // namespace physics
 }  // namespace gazebo

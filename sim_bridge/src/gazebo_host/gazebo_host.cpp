@@ -236,6 +236,14 @@ PYBIND11_MODULE(_gazebo_host, m)
     py::gil_scoped_release release;
     return Host::Instance().LoadWorldPlugin(_filename, _name, element);
   });
+  m.def("load_system_plugin", [](const std::string &_filename,
+                                 const std::vector<std::string> &_argv) {
+    return Host::Instance().LoadSystemPlugin(_filename, _argv);
+  }, py::call_guard<py::gil_scoped_release>());
+  m.def("init_system_plugins", []() { return Host::Instance().InitSystemPlugins(); },
+        py::call_guard<py::gil_scoped_release>());
+  m.def("world_created", []() { Host::Instance().WorldCreated(); },
+        py::call_guard<py::gil_scoped_release>());
   m.def("plugin_names", [](const std::string &_model) {
     return Host::Instance().PluginNames(_model);
   });

@@ -144,6 +144,26 @@ class NativePlugins:
                                                 element_tree(element)),
             "the world runs without it")
 
+    def load_system_plugins(self, filenames: List[str], argv: List[str]) -> None:
+        """gzserver's ``-s`` plugins, before the world loads: each made and given
+        ``Load(argc, argv)`` with gzserver's command line, then every ``Init()`` (gazebo
+        11's gazebo_shared.cc:55-96); one that cannot be loaded, or throws, is named and the
+        simulator runs without it."""
+        loaded = [filename for filename in filenames if self._load(
+            f"system plugin ({filename})",
+            lambda host, filename=filename: host.load_system_plugin(filename, argv),
+            "the simulator runs without it")]
+        if loaded:
+            for error in self._host.init_system_plugins():
+                self.world.bus.warn(f"{error}; the simulator runs without it")
+                self.count -= 1
+
+    def world_created(self) -> None:
+        """The world has loaded: ``Events::worldCreated`` (physics/World.cc:414), for the
+        plugins loaded so far."""
+        if self._host is not None:
+            self._host.world_created()
+
     def begin(self, sim_time_ns: int) -> None:
         if self.count:
             self._host.world_update_begin(sim_time_ns)

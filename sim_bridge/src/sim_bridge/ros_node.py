@@ -38,7 +38,7 @@ import sys
 import threading
 import time
 from dataclasses import dataclass
-from typing import Any, Callable, Dict, Optional, Tuple
+from typing import Any, Callable, Dict, Optional, Sequence, Tuple
 
 import numpy as np
 import pybullet as pb
@@ -877,12 +877,15 @@ class SimBridgeNode:
             self._pace()
 
 
-def build_world(config: Config, bus: Bus) -> World:
+def build_world(config: Config, bus: Bus, system_plugins: Sequence[str] = (),
+                argv: Sequence[str] = ()) -> World:
     gui = config.gui and display_available()
     if config.gui and not gui:
         rospy.logwarn("gui is true but no display answers (DISPLAY unset or unreachable); "
                       "running headless")
     world = World(bus, gui=gui, seed=config.seed, ray_threads=config.ray_threads)
+    if system_plugins:  # before the world, as gzserver loads them
+        world.native.load_system_plugins(list(system_plugins), list(argv))
     if config.world_name:
         world.load_world(load_world(config.world_name))
         rospy.loginfo(f"loaded world {config.world_name}: {len(world.models)} models, "
@@ -912,9 +915,12 @@ def main(overrides: Optional[Dict[str, Any]] = None) -> None:
     sys.setswitchinterval(THREAD_SWITCH_INTERVAL)
     stop = StopSignals().install()
     physics = PhysicsThread()
+    overrides = dict(overrides or {})
+    # gzserver -s: Gazebo system plugins, and the command line they are given
+    system_plugins, argv = overrides.pop("system_plugins", ((), []))
     try:
         config = Config.from_parameters(overrides)
-        world = build_world(config, RosBus(physics, config.verbose))
+        world = build_world(config, RosBus(physics, config.verbose), system_plugins, argv)
     except (ValueError, SdfError) as error:
         rospy.logfatal(f"sim_bridge cannot start: {error}")
         raise SystemExit(1) from None

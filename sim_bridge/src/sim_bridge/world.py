@@ -483,6 +483,9 @@ class World:
         for model in spec.models:
             self.add_sdf_model(model)
         self.lights.extend(spec.lights)
+        # Events::worldCreated once the models are in, before the world's plugins load
+        # (gazebo 11 physics/World.cc:414, in World::Load; the plugins in World::Init)
+        self.native.world_created()
         for element in spec.plugins:  # after the models, as Gazebo loads them
             self.native.load_world_plugin(spec.name, element)
 

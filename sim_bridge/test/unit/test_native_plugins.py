@@ -454,3 +454,57 @@ def test_a_plugin_finds_what_gzserver_has_loaded_and_an_unbound_symbol_is_named(
     log = capfd.readouterr().err
     assert "libhost_scope_plugin.so: undefined symbol: sim_bridge_test_defined_nowhere" in log
     assert "loaded as Gazebo loads it (lazily)" in log
+
+
+# gzserver's command line as a launch file gives it: three words, which system_push turns
+# into 0.3 m/s
+SYSTEM_ARGV = ["gzserver", "-s", "libsystem_push.so"]
+
+
+def _plain_box_world(tmp_path):
+    """model_push's world without its model plugin: the box at rest unless pushed."""
+    with open(os.path.join(PLUGINS_SOURCE, "model_push.world")) as stream:
+        text = stream.read().replace('<plugin name="model_push" filename="libmodel_push.so"/>',
+                                     "")
+    path = tmp_path / "plain_box.world"
+    path.write_text(text)
+    return load_world(str(path))
+
+
+def test_a_system_plugin_gets_the_command_line_and_the_world_once_created(plugin_world,
+                                                                          tmp_path):
+    """gzserver -s: Load(argc, argv) and Init() before the world, Events::worldCreated once
+    its models are in, physics::get_world by that name (gazebo 11's gazebo_shared.cc:55-96,
+    physics/World.cc:414, PhysicsIface.cc:58-79): system_push then pushes the box at 0.1
+    m/s a word of its command line."""
+    world, bus = plugin_world
+    world.native.load_system_plugins(["libsystem_push.so"], SYSTEM_ARGV)
+    world.load_world(_plain_box_world(tmp_path))
+    assert bus.warnings == []
+    start = world.pose("box")[0]
+    for _ in range(round(PUSH_SECONDS / world.step_size)):
+        world.step()
+    travelled = world.pose("box")[0][0] - start[0]
+    assert travelled == pytest.approx(0.1 * len(SYSTEM_ARGV) * PUSH_SECONDS, rel=PUSH_TOLERANCE)
+
+
+def test_a_system_plugin_that_fails_is_named_and_the_world_runs(plugin_world, tmp_path,
+                                                               monkeypatch):
+    """One that throws in Init, one of another type, one that is nowhere: each named with
+    Gazebo's words, none run, the world loads and steps."""
+    world, bus = plugin_world
+    monkeypatch.setenv("SYSTEM_PUSH_FAIL", "init")
+    world.native.load_system_plugins(["libmodel_push.so", "libnot_there.so",
+                                      "libsystem_push.so"], SYSTEM_ARGV)
+    world.load_world(_plain_box_world(tmp_path))
+    wrong_type, absent, throws = bus.warnings
+    assert "detected an incorrect plugin type. Plugin filename[libmodel_push.so]" in wrong_type
+    assert "libnot_there.so: cannot open shared object file" in absent
+    assert ("exception in the Init function of system plugin [libsystem_push.so]: "
+            "system_push was told to fail in Init" in throws)
+    assert all(w.endswith("the simulator runs without it") for w in bus.warnings)
+    assert world.native.count == 0
+    start = world.pose("box")[0]
+    for _ in range(200):
+        world.step()
+    assert world.pose("box")[0][0] == pytest.approx(start[0], abs=1e-4)

@@ -42,6 +42,13 @@ namespace gazebo_compat
                                          const std::string &_name, sdf::ElementPtr _sdf);
     public: std::string LoadWorldPlugin(const std::string &_filename, const std::string &_name,
                                         sdf::ElementPtr _sdf);
+    // a system plugin (gzserver -s): made and Load(argc, argv) now, Init() by InitSystemPlugins
+    public: std::string LoadSystemPlugin(const std::string &_filename,
+                                         const std::vector<std::string> &_argv);
+    // every system plugin's Init(); why each that failed did (those are dropped)
+    public: std::vector<std::string> InitSystemPlugins();
+    // the world has loaded: Events::worldCreated with its name
+    public: void WorldCreated();
     // the model's plugins destroyed, the model forgotten (it was deleted)
     public: void RemoveModel(const std::string &_name);
     public: std::vector<std::string> PluginNames(const std::string &_model) const;
@@ -65,6 +72,10 @@ namespace gazebo_compat
     private: std::map<std::string, gazebo::physics::ModelPtr> models;
     private: std::vector<std::pair<std::string, gazebo::ModelPlugin::TPtr>> modelPlugins;
     private: std::vector<gazebo::WorldPlugin::TPtr> worldPlugins;
+    private: std::vector<std::pair<std::string, gazebo::SystemPlugin::TPtr>> systemPlugins;
+    // the command line system plugins are given, kept for as long as they may read it
+    private: std::vector<std::string> systemArguments;
+    private: std::vector<char *> systemArgv;
     private: std::vector<std::pair<std::string, gazebo::SensorPlugin::TPtr>> sensorPlugins;
     private: int64_t simTimeNs = 0;
     private: uint32_t iterations = 0;

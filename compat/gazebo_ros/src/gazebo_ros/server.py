@@ -10,8 +10,12 @@ does and hands what it means to sim_bridge's node:
   -e, --physics ENGINE    accepted: sim_bridge simulates with Bullet whatever is asked
   -r, --record, --record_path, --record_encoding, --record_period, --record_filter
                           accepted; Gazebo's log recording is not emulated (one warning)
-  -s, --server-plugin, -g, --gui-plugin PLUGIN
-                          accepted: gazebo_ros's own plugins are what sim_bridge is
+  -s, --server-plugin PLUGIN
+                          a Gazebo system plugin, loaded (sim_bridge.native_plugins) before
+                          the world, given gzserver's command line; gazebo_ros's own
+                          (libgazebo_ros_*.so: the API and paths plugins) are what sim_bridge
+                          is, and are not loaded
+  -g, --gui-plugin PLUGIN accepted: there is no Gazebo GUI to load it into
   --seed N                seed of the simulated noise (a whole number >= 0)
   WORLD                   the world file (relative names are looked up in the current folder,
                           then GAZEBO_RESOURCE_PATH, which includes this package's worlds)
@@ -39,9 +43,12 @@ import rospy
 from node_params import Given
 
 # Options that take a value and mean nothing here.
-IGNORED_WITH_VALUE = ("-s", "--server-plugin", "-g", "--gui-plugin", "--record_path",
+IGNORED_WITH_VALUE = ("-g", "--gui-plugin", "--record_path",
                       "--record_encoding", "--record_period", "--record_filter", "--iters",
                       "-o", "--profile")
+# gazebo_ros's own system plugins (libgazebo_ros_api_plugin.so, libgazebo_ros_paths_plugin.so),
+# which sim_bridge is
+GAZEBO_ROS_PLUGINS = "libgazebo_ros_"
 IGNORED_FLAGS = ("-q", "--quiet", "--lockstep", "--minimal_comms", "--play")
 
 
@@ -53,6 +60,7 @@ def parse_command_line(argv: List[str]) -> Tuple[Dict[str, Any], List[str]]:
     parser.add_argument("-e", "--physics", default="ode")
     parser.add_argument("--seed")  # checked by sim_bridge's reader, named as the option
     parser.add_argument("-r", "--record", action="store_true")
+    parser.add_argument("-s", "--server-plugin", action="append", default=[])
     for flag in IGNORED_FLAGS:
         parser.add_argument(flag, action="store_true")
     for option in IGNORED_WITH_VALUE:
@@ -71,6 +79,10 @@ def parse_command_line(argv: List[str]) -> Tuple[Dict[str, Any], List[str]]:
         overrides["verbose"] = True
     if args.seed is not None:
         overrides["seed"] = Given(args.seed, "gzserver --seed")
+    system_plugins = [name for name in args.server_plugin
+                      if not os.path.basename(name).startswith(GAZEBO_ROS_PLUGINS)]
+    if system_plugins:
+        overrides["system_plugins"] = (system_plugins, ["gzserver", *argv])
     if args.record or args.record_path:
         notes.append("recording a Gazebo log (-r) is not emulated; the run is not recorded")
     if args.physics not in ("ode", "bullet"):
