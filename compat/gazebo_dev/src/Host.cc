@@ -104,6 +104,44 @@ void *OpenPluginLibrary(const std::string &_filename, std::string &_fullname,
   return symbol;
 }
 
+namespace
+{
+// The plugin of type T the library _filename registers (its RegisterPlugin, as
+// GZ_REGISTER_*_PLUGIN defines it), or none with why not in _error: the library not found
+// or not loadable, its constructor threw, it returned none, or it is of another type than
+// _type (_wrongType then).
+template <typename T>
+typename T::TPtr MakePlugin(const std::string &_filename, gazebo::PluginType _type,
+                            const std::string &_wrongType, std::string &_error)
+{
+  std::string fullname, error;
+  void *symbol = OpenPluginLibrary(_filename, fullname, error);
+  if (!symbol)
+  {
+    _error = "failed to load plugin " + _filename + ": " + error;
+    return typename T::TPtr();
+  }
+  typename T::TPtr plugin;
+  try
+  {
+    typedef T *(*Register)();
+    plugin.reset(reinterpret_cast<Register>(symbol)());
+  }
+  catch (...)
+  {
+    _error = "its constructor threw: " + Describe(std::current_exception());
+    return typename T::TPtr();
+  }
+  if (!plugin)
+    _error = "RegisterPlugin returned no plugin";
+  else if (plugin->GetType() != _type)
+    _error = _wrongType;
+  else
+    return plugin;
+  return typename T::TPtr();
+}
+}  // namespace
+
 std::vector<std::string> Host::PluginPath()
 {
   std::vector<std::string> folders = Split(std::getenv("GAZEBO_PLUGIN_PATH"));
@@ -220,30 +258,16 @@ std::vector<gazebo::physics::ModelPtr> Host::KnownModels() const
 std::string Host::LoadModelPlugin(const std::string &_model, const std::string &_filename,
                                   const std::string &_name, sdf::ElementPtr _sdf)
 {
-  gazebo::physics::ModelPtr model;
-  gazebo::ModelPlugin::TPtr plugin;
-  std::string fullname, error;
-  void *symbol = OpenPluginLibrary(_filename, fullname, error);
-  if (!symbol)
-    return "failed to load plugin " + _filename + ": " + error;
-  try
-  {
-    model = this->Model(_model);
-    typedef gazebo::ModelPlugin *(*Register)();
-    plugin.reset(reinterpret_cast<Register>(symbol)());
-  }
-  catch (...)
-  {
-    return "its constructor threw: " + Describe(std::current_exception());
-  }
+  std::string error;
+  gazebo::ModelPlugin::TPtr plugin = MakePlugin<gazebo::ModelPlugin>(
+      _filename, gazebo::MODEL_PLUGIN, "it is not a model plugin (GZ_REGISTER_MODEL_PLUGIN); "
+      "a world plugin belongs in the world file, a system plugin on gzserver's command line "
+      "(-s)", error);
   if (!plugin)
-    return "RegisterPlugin returned no plugin";
-  if (plugin->GetType() != gazebo::MODEL_PLUGIN)
-    return "it is not a model plugin (GZ_REGISTER_MODEL_PLUGIN); a world plugin belongs in "
-           "the world file, others are not loaded by sim_bridge";
+    return error;
   try
   {
-    plugin->Load(model, _sdf);
+    plugin->Load(this->Model(_model), _sdf);
     plugin->Init();
   }
   catch (...)
@@ -260,11 +284,12 @@ std::string Host::LoadSensorPlugin(const std::string &_model, const std::string 
                                    const std::string &_filename, const std::string &_name,
                                    sdf::ElementPtr _sdf)
 {
-  gazebo::SensorPlugin::TPtr plugin;
-  std::string fullname, error;
-  void *symbol = OpenPluginLibrary(_filename, fullname, error);
-  if (!symbol)
-    return "failed to load plugin " + _filename + ": " + error;
+  std::string error;
+  gazebo::SensorPlugin::TPtr plugin = MakePlugin<gazebo::SensorPlugin>(
+      _filename, gazebo::SENSOR_PLUGIN, "it is not a sensor plugin (GZ_REGISTER_SENSOR_PLUGIN)",
+      error);
+  if (!plugin)
+    return error;
   gazebo::sensors::SensorPtr sensor;
   try
   {
@@ -272,19 +297,14 @@ std::string Host::LoadSensorPlugin(const std::string &_model, const std::string 
     for (const auto &candidate : gazebo::sensors::SensorManager::Instance()->GetSensors())
       if (candidate->ModelName() == _model && candidate->Name() == _sensor)
         sensor = candidate;
-    typedef gazebo::SensorPlugin *(*Register)();
-    plugin.reset(reinterpret_cast<Register>(symbol)());
   }
   catch (...)
   {
-    return "its constructor threw: " + Describe(std::current_exception());
+    return "its model '" + _model + "' could not be read: " +
+           Describe(std::current_exception());
   }
   if (!sensor)
     return "its sensor '" + _sensor + "' is not one sim_bridge makes";
-  if (!plugin)
-    return "RegisterPlugin returned no plugin";
-  if (plugin->GetType() != gazebo::SENSOR_PLUGIN)
-    return "it is not a sensor plugin (GZ_REGISTER_SENSOR_PLUGIN)";
   try
   {
     plugin->Load(sensor, _sdf);
@@ -303,24 +323,12 @@ std::string Host::LoadSensorPlugin(const std::string &_model, const std::string 
 std::string Host::LoadWorldPlugin(const std::string &_filename, const std::string &_name,
                                   sdf::ElementPtr _sdf)
 {
-  gazebo::WorldPlugin::TPtr plugin;
-  std::string fullname, error;
-  void *symbol = OpenPluginLibrary(_filename, fullname, error);
-  if (!symbol)
-    return "failed to load plugin " + _filename + ": " + error;
-  try
-  {
-    typedef gazebo::WorldPlugin *(*Register)();
-    plugin.reset(reinterpret_cast<Register>(symbol)());
-  }
-  catch (...)
-  {
-    return "its constructor threw: " + Describe(std::current_exception());
-  }
+  std::string error;
+  gazebo::WorldPlugin::TPtr plugin = MakePlugin<gazebo::WorldPlugin>(
+      _filename, gazebo::WORLD_PLUGIN, "it is not a world plugin (GZ_REGISTER_WORLD_PLUGIN)",
+      error);
   if (!plugin)
-    return "RegisterPlugin returned no plugin";
-  if (plugin->GetType() != gazebo::WORLD_PLUGIN)
-    return "it is not a world plugin (GZ_REGISTER_WORLD_PLUGIN)";
+    return error;
   try
   {
     plugin->Load(this->World(), _sdf);
@@ -343,25 +351,12 @@ std::string Host::LoadWorldPlugin(const std::string &_filename, const std::strin
 std::string Host::LoadSystemPlugin(const std::string &_filename,
                                    const std::vector<std::string> &_argv)
 {
-  gazebo::SystemPlugin::TPtr plugin;
-  std::string fullname, error;
-  void *symbol = OpenPluginLibrary(_filename, fullname, error);
-  if (!symbol)
-    return "failed to load plugin " + _filename + ": " + error;
-  try
-  {
-    typedef gazebo::SystemPlugin *(*Register)();
-    plugin.reset(reinterpret_cast<Register>(symbol)());
-  }
-  catch (...)
-  {
-    return "its constructor threw: " + Describe(std::current_exception());
-  }
+  std::string error;
+  gazebo::SystemPlugin::TPtr plugin = MakePlugin<gazebo::SystemPlugin>(
+      _filename, gazebo::SYSTEM_PLUGIN, "System is attempting to load a plugin, but detected "
+      "an incorrect plugin type. Plugin filename[" + _filename + "]", error);
   if (!plugin)
-    return "RegisterPlugin returned no plugin";
-  if (plugin->GetType() != gazebo::SYSTEM_PLUGIN)
-    return "System is attempting to load a plugin, but detected an incorrect plugin type. "
-           "Plugin filename[" + _filename + "]";
+    return error;
   {
     std::lock_guard<std::recursive_mutex> lock(this->mutex);
     if (this->systemArgv.empty())

@@ -508,3 +508,16 @@ def test_a_system_plugin_that_fails_is_named_and_the_world_runs(plugin_world, tm
     for _ in range(200):
         world.step()
     assert world.pose("box")[0][0] == pytest.approx(start[0], abs=1e-4)
+
+
+def test_a_system_plugin_named_in_a_model_is_refused_naming_where_it_belongs(plugin_world,
+                                                                             tmp_path):
+    world, bus = plugin_world
+    path = tmp_path / "crate.world"
+    path.write_text(_box_with_plugins(("pusher", "libsystem_push.so")))
+    world.load_world(load_world(str(path)))
+    [warning] = bus.warnings
+    assert warning.startswith("model 'crate': plugin 'pusher' (libsystem_push.so) not loaded: "
+                              "it is not a model plugin (GZ_REGISTER_MODEL_PLUGIN)")
+    assert "a system plugin on gzserver's command line (-s)" in warning
+    assert "crate" in world.models and world.native.count == 0
