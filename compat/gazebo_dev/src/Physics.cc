@@ -658,17 +658,10 @@ void World::InsertModelString(const std::string &)
 
 WorldPtr get_world(const std::string &_name)
 {
-  try
-  {
-    std::shared_ptr<gazebo_compat::Backend> world = backend();
-    if (_name.empty() || world->WorldName() == _name)
-      return gazebo_compat::Host::Instance().World();
-  }
-  catch (const std::runtime_error &)
-  {
-    if (_name.empty())
-      gzerr << "no worlds\n";
-  }
+  if (has_world(_name))
+    return gazebo_compat::Host::Instance().World();
+  if (_name.empty())
+    gzerr << "no worlds\n";
   gzerr << "Unable to find world by name in physics::get_world[" << _name.c_str() << "]\n";
   gzthrow("Unable to find world by name in physics::get_world(world_name)");
 }

@@ -823,14 +823,18 @@ class SimBridgeNode:
         model_states or link_states are while someone listens to them (unheard, their
         times only move on), and paced, no more than PACE_BATCH of wall time's worth."""
         now_ns = self.world.now_ns
+
+        def steps_until(due_ns: int) -> int:  # the first step ending at or after due_ns
+            return max(1, -(-(due_ns - now_ns) // step_ns))
+
         steps = MAX_BATCH_STEPS
         factor = self.world.real_time_factor
         if factor > 0:
             steps = min(steps, max(1, int(PACE_BATCH * factor * 1e9) // step_ns))
         if self.clock_period_ns > step_ns:
-            steps = min(steps, max(1, -(-(self._next_clock_ns - now_ns) // step_ns)))
+            steps = min(steps, steps_until(self._next_clock_ns))
         if self._states_listened():
-            steps = min(steps, max(1, -(-(self._next_states_ns - now_ns) // step_ns)))
+            steps = min(steps, steps_until(self._next_states_ns))
         return steps
 
     def _states_listened(self) -> bool:
