@@ -9,7 +9,9 @@ of its own, and prints one line per measure:
   paced  the same at real_time_factor:=1: CPU as a share of one core
   robots make bench's "8 robots" measure (their lasers unheard: only the probe listens,
          to /scan and /clock); robots_heard: the same with each robot's scan listened to
-  bare   ``bench.measure_bare``: the same scene's physics alone (no plugins, no ROS)
+  bare   ``bench.BareScene``: the same scene's physics alone (no plugins, no ROS); with
+         fast or paced, in windows alternating with theirs as make bench measures
+         (fast: its real-time factor; paced: bare_cpu, its CPU paced alike)
   plugins
          in this process, without ROS: each emulated plugin's own time per step (before
          and after the physics), in the bench world, with its topics heard (each message
@@ -238,25 +240,30 @@ def measure(which: Sequence[str], profile_path: Optional[str]) -> Dict[str, Dict
                 original = bench.measure_window
                 sampler: List[subprocess.Popen] = []
 
-                def window(probe_, pid):
+                def window(probe_, pid, seconds=bench.WINDOW):
                     if profile_path and not sampler:
-                        sampler.append(profile(pid, bench.WINDOW, profile_path))
+                        sampler.append(profile(pid, seconds, profile_path))
                     before = user_and_system(pid)
-                    figures = original(probe_, pid)
+                    figures = original(probe_, pid, seconds)
                     after = user_and_system(pid)
                     # the simulator's CPU split: its own code against the kernel's work
                     # for it (sends, wake-ups, sleeps)
                     figures["user_ms_per_sim_s"], figures["sys_ms_per_sim_s"] = (
-                        1000.0 * (b - a) / max(figures["rtf"] * bench.WINDOW, 1e-9)
+                        1000.0 * (b - a) / max(figures["simulated"], 1e-9)
                         for a, b in zip(before, after))
                     return figures
 
                 bench.measure_window = window
+                # with bare asked for too: alternating with it, as make bench measures
+                scene = bench.BareScene() if "bare" in which and (
+                    "fast" in which or "paced" in which) else None
                 if "fast" in which:
-                    results["fast"] = bench.measure_ros(env, probe, "fast")
+                    results["fast"] = bench.measure_ros(env, probe, "fast", bare=scene)
                 if "paced" in which:
                     results["paced"] = bench.measure_ros(env, probe, "paced",
-                                                         real_time_factor="1")
+                                                         real_time_factor="1", bare=scene)
+                if scene is not None:
+                    scene.close()
                 if "robots" in which:  # as make bench's "8 robots" row runs them
                     results["robots"] = bench.measure_ros(env, probe, "robots_8", robots=8)
                 if "robots_heard" in which:  # the same, each robot's /scan listened to
@@ -269,7 +276,9 @@ def measure(which: Sequence[str], profile_path: Optional[str]) -> Dict[str, Dict
             finally:
                 core.terminate()
                 core.wait(timeout=20)
-    if "bare" in which:
+    if "bare" in which and "fast" in results:
+        results["bare"] = {"rtf": results["fast"]["bare"]}
+    elif "bare" in which and "paced" not in results:
         results["bare"] = {"rtf": bench.measure_bare()}
     if "plugins" in which:
         heard, unheard = plugin_costs(True), plugin_costs(False)
@@ -304,7 +313,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     for name, figures in results.items():
         line = " ".join(f"{key} {value:.3f}" for key, value in figures.items()
                         if key in ("rtf", "cpu", "cpu_ms_per_sim_s", "user_ms_per_sim_s",
-                                   "sys_ms_per_sim_s"))
+                                   "sys_ms_per_sim_s", "bare", "bare_cpu"))
         print(f"{name}: {line}", flush=True)
     print(f"({time.monotonic() - started:.0f} s)")
     return 0

@@ -1510,7 +1510,7 @@ class World:
         now_ns, step_ns = self.now_ns, self._step_ns
         quiet_ns = NEVER
         for plugin in self._plugins:
-            until = plugin.quiet_until_ns(now_ns)
+            until = plugin.quiet_until_ns(now_ns, step_ns)
             if until < quiet_ns:
                 quiet_ns = until
         made = 0

@@ -163,25 +163,41 @@ def test_advance_makes_the_same_world_and_messages_as_stepping(heard, robots):
 @pytest.mark.parametrize("odometry_source", ["world", "encoder"])
 def test_rate_gated_robot_is_stepped_in_batches_by_the_physics_alone(world, diff_bot_xml,
                                                                      odometry_source):
-    """The bench's RB1-class robot (diff drive at 50 Hz, laser at 20 Hz): most steps are
-    made without calling a plugin (the drive's slot, its odometry and the laser's scans
-    fall on different steps); with encoder odometry, which integrates the wheels at every
-    step (gazebo_plugins/src/gazebo_ros_diff_drive.cpp:254-255), none is."""
+    """The bench's RB1-class robot (diff drive at 50 Hz, laser at 20 Hz): the plugins are
+    called in the steps where one of them acts and in no other (the drive's slot, which
+    falls at a step's start, its odometry and the laser's scans, at a step's end); with
+    encoder odometry, which integrates the wheels at every step
+    (gazebo_plugins/src/gazebo_ros_diff_drive.cpp:254-255), at every step."""
     model = world.spawn_urdf("bot", diff_bot_xml(odometry_source=odometry_source), (0, 0, 0))
-    called = set()
+    whole, acting = [], set()  # the start times of the steps calling the plugins, acting
+    step = world.step
+
+    def watched_step():
+        whole.append(world.now_ns)
+        return step()
+    world.step = watched_step
     for plugin in model.plugins:
-        for hook in ("before_step", "after_step"):
-            original = getattr(plugin, hook)
-            setattr(plugin, hook, lambda now_ns, original=original: called.add(now_ns)
-                    or original(now_ns))
+        for gate in (getattr(plugin, "slots", None), plugin.rate):
+            if gate is None:
+                continue
+
+            def watched_due(now_ns, due=gate.due):
+                answer = due(now_ns)
+                if answer is not None and answer is not False:
+                    acting.add(whole[-1])
+                return answer
+            gate.due = watched_due
+
     batches = [world.advance(20) for _ in range(200)]
     steps = sum(batches)
     if odometry_source == "world":
-        # per 20 steps: the slot, the odometry and (one in 2.5) the scan: a step and its end
-        assert len(called) < steps / 4 and steps > 1000, (len(called), steps)
+        assert set(whole) == acting, sorted(set(whole) ^ acting)[:10]
+        # per 100 ms: 5 slots, 5 odometry messages, 2 scans (one of them on an odometry
+        # step): 11 steps in 100
+        assert abs(len(whole) - steps * 11 / 100) <= 3 and steps > 1000, (len(whole), steps)
         assert max(batches) >= 18
     else:
-        assert batches == [1] * 200 and len(called) == 201  # the times before and after
+        assert batches == [1] * 200 and len(whole) == 200
 
 
 def test_quiet_until_is_where_the_plugin_first_acts():
@@ -198,8 +214,8 @@ def test_quiet_until_is_where_the_plugin_first_acts():
         def after_step(self, now_ns):
             pass
 
-    assert Idle().quiet_until_ns(5) == NEVER
-    assert Busy().quiet_until_ns(5) == 5
+    assert Idle().quiet_until_ns(5, 1) == NEVER
+    assert Busy().quiet_until_ns(5, 1) == 5
     for rate in (0.0, 1.0, 3.0, 7.0, 30.0, 50.0, 100.0, 333.0, 1000.0):
         slots = UpdateSlots(rate)
         assert slots.quiet_until_ns(123) == 123  # before its first call

@@ -305,14 +305,16 @@ class Plugin:
         return value if isinstance(value, str) else ""
 
     # --- the step ---------------------------------------------------------------------
-    def quiet_until_ns(self, now_ns: int) -> int:
-        """The earliest simulated time at which :meth:`before_step` or :meth:`after_step` may
-        do anything: called with any earlier time, both return at once, changing nothing
-        and calling nothing. The world makes the steps before it by the physics alone
+    def quiet_until_ns(self, now_ns: int, step_ns: int) -> int:
+        """The end of the first step, of the steps of ``step_ns`` from ``now_ns``, in which
+        :meth:`before_step` (given the step's start) or :meth:`after_step` (given its end)
+        may do anything: in every step that ends earlier, both return at once, changing
+        nothing and calling nothing. The world makes those steps by the physics alone
         (:meth:`World.advance <sim_bridge.world.World.advance>`), which is what calling the
         plugin there would have done. A plugin that overrides either method may act at
         every step unless it says otherwise (rate-gated plugins answer from their
-        :class:`Rate` or :class:`UpdateSlots`); one that overrides neither never acts."""
+        :class:`Rate`, an end's time, or :class:`UpdateSlots`, a start's, which is one step
+        before its end); one that overrides neither never acts."""
         cls = type(self)
         if cls.before_step is Plugin.before_step and cls.after_step is Plugin.after_step:
             return NEVER

@@ -119,7 +119,7 @@ class Bumper(Plugin):
             (pb.getBodyInfo(body, physicsClientId=client)[0].decode() or "link")
         return f"{model}::{link_name}::{link_name}_collision"
 
-    def quiet_until_ns(self, now_ns: int) -> int:
+    def quiet_until_ns(self, now_ns: int, step_ns: int) -> int:
         return self.rate.quiet_until_ns()  # after_step asks the rate first
 
     def after_step(self, now_ns: int) -> None:

@@ -273,7 +273,7 @@ class Camera(SensorPlugin):
     def reset(self, now_ns: int) -> None:
         self.rate.reset(now_ns)
 
-    def quiet_until_ns(self, now_ns: int) -> int:
+    def quiet_until_ns(self, now_ns: int, step_ns: int) -> int:
         return self.rate.quiet_until_ns()  # after_step asks the rate first
 
     def after_step(self, now_ns: int) -> None:
@@ -471,8 +471,8 @@ class MultiCamera(Plugin):
         for camera in self.cameras:
             camera.reset(now_ns)
 
-    def quiet_until_ns(self, now_ns: int) -> int:
-        return min(camera.quiet_until_ns(now_ns) for camera in self.cameras)
+    def quiet_until_ns(self, now_ns: int, step_ns: int) -> int:
+        return min(camera.quiet_until_ns(now_ns, step_ns) for camera in self.cameras)
 
     def after_step(self, now_ns: int) -> None:
         for camera in self.cameras:

@@ -107,12 +107,12 @@ class DiffDrive(DriveBase):
         self.encoder_twist = (0.0, 0.0)
 
     # --- the step -------------------------------------------------------------------------
-    def quiet_until_ns(self, now_ns: int) -> int:
-        # the wheels' slots before the step, the odometry's rate after it; encoder odometry
-        # integrates the wheels at every step
+    def quiet_until_ns(self, now_ns: int, step_ns: int) -> int:
+        # the wheels' slots before the step (its start), the odometry's rate after it (its
+        # end); encoder odometry integrates the wheels at every step
         if self.encoder:
             return now_ns
-        return min(self.slots.quiet_until_ns(now_ns), self.rate.quiet_until_ns())
+        return min(self.slots.quiet_until_ns(now_ns) + step_ns, self.rate.quiet_until_ns())
 
     def before_step(self, now_ns: int) -> None:
         """Noetic's rate branch (gazebo_plugins/src/gazebo_ros_diff_drive.cpp:271-308): at

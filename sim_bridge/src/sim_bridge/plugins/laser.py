@@ -121,7 +121,7 @@ class Laser(SensorPlugin):
             ranges[hit] = np.round(ranges[hit] / self.resolution) * self.resolution
         return ranges
 
-    def quiet_until_ns(self, now_ns: int) -> int:
+    def quiet_until_ns(self, now_ns: int, step_ns: int) -> int:
         return self.rate.quiet_until_ns()  # after_step asks the rate first
 
     def after_step(self, now_ns: int) -> None:

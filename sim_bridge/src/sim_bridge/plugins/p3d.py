@@ -61,7 +61,7 @@ class P3D(Plugin):
         angular = np.asarray(state[7])
         return np.asarray(state[6]) + np.cross(angular, frame - com), angular
 
-    def quiet_until_ns(self, now_ns: int) -> int:
+    def quiet_until_ns(self, now_ns: int, step_ns: int) -> int:
         return self.rate.quiet_until_ns()  # after_step asks the rate first
 
     def after_step(self, now_ns: int) -> None:

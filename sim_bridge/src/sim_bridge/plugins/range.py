@@ -82,7 +82,7 @@ class Range(SensorPlugin):
                           self.range_max)
         return nearest
 
-    def quiet_until_ns(self, now_ns: int) -> int:
+    def quiet_until_ns(self, now_ns: int, step_ns: int) -> int:
         return self.rate.quiet_until_ns()  # after_step asks the rate first
 
     def after_step(self, now_ns: int) -> None:

@@ -48,9 +48,9 @@ class SkidSteer(DriveBase):
         self._joints = [robot.joint_index[j] for j in self.left + self.right]
         self.applied = None
 
-    def quiet_until_ns(self, now_ns: int) -> int:
-        # the wheels' slots before the step, the odometry's rate after it
-        return min(self.slots.quiet_until_ns(now_ns), self.rate.quiet_until_ns())
+    def quiet_until_ns(self, now_ns: int, step_ns: int) -> int:
+        # the wheels' slots before the step (its start), the odometry's rate after it
+        return min(self.slots.quiet_until_ns(now_ns) + step_ns, self.rate.quiet_until_ns())
 
     def before_step(self, now_ns: int) -> None:
         """Noetic's rate branch (gazebo_plugins/src/gazebo_ros_skid_steer_drive.cpp:350-383):
