@@ -91,7 +91,12 @@ def test_display_launch_as_typed_wheels_follow_the_sliders(screen_env, results_d
 
     headless.run_while_node_lives(["my_rb1_description", "display.launch"], screen_env, log,
                                   drag_the_first_slider)
-    assert starts == [log, os.path.join(results_dir, "display-2.log")]
+    # the start killed on purpose, then the launch started again with a log of its own
+    # (and again for each time Debian's rviz died of itself meanwhile, as it does now and
+    # then under Xvfb: seen once in a fresh clone, its second start's rviz SIGSEGV)
+    assert len(starts) >= 2
+    assert starts == [log] + [os.path.join(results_dir, f"display-{start}.log")
+                              for start in range(2, len(starts) + 1)]
 
 
 def test_a_malformed_model_stops_the_launch_naming_file_and_error(ros_env, results_dir):
